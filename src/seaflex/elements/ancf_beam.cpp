@@ -1,0 +1,232 @@
+#include "seaflex/elements/ancf_beam.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace seaflex {
+
+using ancf_cable::Mat12;
+using ancf_cable::Vec12;
+
+BeamSection BeamSection::pipe(double outer_diameter, double inner_diameter, double youngs_modulus,
+                              double density) {
+  BeamSection s;
+  const double d2o = outer_diameter * outer_diameter, d2i = inner_diameter * inner_diameter;
+  s.area = std::numbers::pi / 4.0 * (d2o - d2i);
+  s.second_moment = std::numbers::pi / 64.0 * (d2o * d2o - d2i * d2i);
+  s.youngs_modulus = youngs_modulus;
+  s.density = density;
+  s.outer_diameter = outer_diameter;
+  s.inner_diameter = inner_diameter;
+  return s;
+}
+
+BeamGeometry BeamGeometry::straight(const Vec3& start, const Vec3& end, int elements) {
+  return polyline({start, end}, {elements});
+}
+
+BeamGeometry BeamGeometry::polyline(const std::vector<Vec3>& points,
+                                    const std::vector<int>& counts) {
+  if (points.size() < 2 || counts.size() != points.size() - 1)
+    throw std::invalid_argument("polyline: need n points and n-1 element counts");
+  BeamGeometry g;
+  std::vector<Vec3> dirs;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const Vec3 d = points[i + 1] - points[i];
+    if (!(d.norm() > 0.0) || counts[i] < 1)
+      throw std::invalid_argument("polyline: zero-length segment or element count < 1");
+    dirs.push_back(d.normalized());
+  }
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const Vec3 d = points[i + 1] - points[i];
+    const double l = d.norm() / counts[i];
+    for (int k = 0; k < counts[i]; ++k) {
+      g.positions.push_back(points[i] + (static_cast<double>(k) / counts[i]) * d);
+      Vec3 t = dirs[i];
+      if (k == 0 && i > 0) t = (dirs[i - 1] + dirs[i]).normalized();
+      g.slopes.push_back(t);
+      g.element_lengths.push_back(l);
+    }
+  }
+  g.positions.push_back(points.back());
+  g.slopes.push_back(dirs.back());
+  return g;
+}
+
+AncfBeam::AncfBeam(std::string name, BeamGeometry geometry, BeamSection section,
+                   BeamOptions options)
+    : Body(std::move(name)),
+      geometry_(std::move(geometry)),
+      section_(section),
+      options_(options),
+      element_lengths_(geometry_.element_lengths) {
+  if (element_lengths_.empty()) throw std::invalid_argument("AncfBeam: no elements");
+  node_arc_.push_back(0.0);
+  for (double l : element_lengths_) node_arc_.push_back(node_arc_.back() + l);
+  total_length_ = node_arc_.back();
+  // one kernel per distinct element length (all equal for a straight mesh)
+  std::vector<double> kernel_lengths;
+  for (double l : element_lengths_) {
+    int found = -1;
+    for (std::size_t k = 0; k < kernel_lengths.size(); ++k)
+      if (std::abs(kernel_lengths[k] - l) <= 1e-12 * l) found = static_cast<int>(k);
+    if (found < 0) {
+      kernel_lengths.push_back(l);
+      kernels_.emplace_back(l, section_.EA(), section_.EI(), options_.axial, options_.bending,
+                            options_.gauss_points);
+      masses_.push_back(ancf_cable::mass_matrix(section_.mass_per_length(), l));
+      found = static_cast<int>(kernels_.size() - 1);
+    }
+    kernel_of_.push_back(found);
+  }
+}
+
+void AncfBeam::write_initial_state(VecX& q, VecX& v) const {
+  for (int k = 0; k < num_nodes(); ++k) {
+    q.segment<3>(node_index(k)) = geometry_.positions[k];
+    q.segment<3>(node_index(k) + 3) = geometry_.slopes[k];
+    v.segment<6>(node_index(k)).setZero();
+  }
+}
+
+void AncfBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
+  blocks_.clear();
+  std::vector<Index> dofs(12);
+  for (int k = 0; k < num_elements(); ++k) {
+    for (int i = 0; i < 12; ++i) dofs[i] = node_index(k) + i;
+    blocks_.push_back(matrix.declare_block(dofs, dofs));
+  }
+}
+
+void AncfBeam::assemble(const State& state, AssemblyTarget& target) const {
+  const MatrixScales& k = target.scales;
+  const bool want_K = target.matrix && k.kq != 0.0;
+  for (int el = 0; el < num_elements(); ++el) {
+    const Vec12 e = element_coordinates(state.q, el);
+    Vec12 Q = Vec12::Zero();
+    Mat12 K = Mat12::Zero();
+    elasticity(el).add_forces(e, Q, want_K ? &K : nullptr);
+    if (target.forces) target.forces->segment<12>(node_index(el)) += Q;
+    if (target.matrix) {
+      // km M + kq K, K = -dQ/de (no velocity dependence: kv contributes nothing)
+      Mat12 H = k.km * masses_[kernel_of_[el]];
+      if (want_K) H += k.kq * K;
+      target.matrix->add(blocks_[el], H);
+    }
+  }
+}
+
+void AncfBeam::add_gravity(const Vec3& g, const State&, AssemblyTarget& target) const {
+  if (!target.forces) return;
+  // thesis eq. (175): uniform load rho A g per unit length through eq. (127)
+  for (int el = 0; el < num_elements(); ++el)
+    target.forces->segment<12>(node_index(el)) +=
+        ancf_cable::uniform_load(section_.mass_per_length() * g, element_lengths_[el]);
+}
+
+double AncfBeam::gravity_potential(const Vec3& g, const State& state) const {
+  // the gravity force is constant, so V = -Q_g . q
+  double V = 0.0;
+  for (int el = 0; el < num_elements(); ++el)
+    V -= ancf_cable::uniform_load(section_.mass_per_length() * g, element_lengths_[el])
+             .dot(element_coordinates(state.q, el));
+  return V;
+}
+
+double AncfBeam::kinetic_energy(const State& state) const {
+  double T = 0.0;
+  for (int el = 0; el < num_elements(); ++el) {
+    const Vec12 ve = state.v.segment<12>(node_index(el));
+    T += 0.5 * ve.dot(masses_[kernel_of_[el]] * ve);
+  }
+  return T;
+}
+
+double AncfBeam::strain_energy(const State& state) const {
+  double U = 0.0;
+  for (int el = 0; el < num_elements(); ++el) {
+    Vec12 Q = Vec12::Zero();
+    U += elasticity(el).add_forces(element_coordinates(state.q, el), Q, nullptr);
+  }
+  return U;
+}
+
+std::string AncfBeam::coordinate_name(Index local) const {
+  static constexpr const char* kAxis[] = {"x", "y", "z"};
+  const Index node = local / 6, c = local % 6;
+  return fmt::format("{}.n{}.{}.{}", name(), node, c < 3 ? "r" : "r'", kAxis[c % 3]);
+}
+
+void AncfBeam::add_channels(ChannelList& channels) const {
+  static constexpr const char* kAxis[] = {"x", "y", "z"};
+  for (int k = 0; k < num_nodes(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      const AncfBeam* self = this;
+      channels.push_back({fmt::format("{}.n{}.{}", name(), k, kAxis[c]),
+                          [self, k, c](const State& s) { return s.q[self->node_index(k) + c]; }});
+    }
+}
+
+std::pair<int, double> AncfBeam::locate(double s) const {
+  if (s < 0.0 || s > total_length_ * (1.0 + 1e-12))
+    throw std::out_of_range(fmt::format("arc length {} m outside beam {} of length {} m", s,
+                                        name(), total_length_));
+  for (int el = 0; el < num_elements(); ++el)
+    if (s <= node_arc_[el + 1] || el == num_elements() - 1)
+      return {el, std::clamp((s - node_arc_[el]) / element_lengths_[el], 0.0, 1.0)};
+  return {num_elements() - 1, 1.0};
+}
+
+BeamPointAttachment::BeamPointAttachment(const AncfBeam& beam, double s) : beam_(beam), s_(s) {
+  std::tie(element_, xi_) = beam.locate(s);
+  const double tol = 1e-12;
+  if (xi_ <= tol) node_ = element_;
+  if (xi_ >= 1.0 - tol) node_ = element_ + 1;
+}
+
+std::unique_ptr<BeamPointAttachment> BeamPointAttachment::at_node(const AncfBeam& beam, int k) {
+  if (k < 0 || k >= beam.num_nodes())
+    throw std::out_of_range(fmt::format("node {} outside beam {} (nodes 0..{})", k, beam.name(),
+                                        beam.num_nodes() - 1));
+  return std::make_unique<BeamPointAttachment>(beam, beam.node_arc_length(k));
+}
+
+std::string BeamPointAttachment::describe() const {
+  if (node_ >= 0) return fmt::format("{}.n{}", beam_.name(), node_);
+  return fmt::format("{}@{}m", beam_.name(), s_);
+}
+
+std::vector<Index> BeamPointAttachment::coordinates() const {
+  std::vector<Index> dofs;
+  if (node_ >= 0) {
+    for (int i = 0; i < 3; ++i) dofs.push_back(beam_.node_index(node_) + i);
+  } else {
+    for (int i = 0; i < 12; ++i) dofs.push_back(beam_.node_index(element_) + i);
+  }
+  return dofs;
+}
+
+Vec3 BeamPointAttachment::position(const State& state) const {
+  if (node_ >= 0) return state.q.segment<3>(beam_.node_index(node_));
+  const auto R = ancf_cable::as_nodes(beam_.element_coordinates(state.q, element_));
+  return R * ancf_cable::shape(xi_, beam_.element_length(element_));  // thesis eq. (3)
+}
+
+void BeamPointAttachment::jacobian(const State&, Eigen::Ref<MatX> J) const {
+  if (node_ >= 0) {
+    J = Mat3::Identity();
+    return;
+  }
+  const ancf_cable::Vec4 s = ancf_cable::shape(xi_, beam_.element_length(element_));
+  J.setZero();
+  for (int i = 0; i < 4; ++i) J.block<3, 3>(0, 3 * i).diagonal().setConstant(s[i]);
+}
+
+void BeamPointAttachment::add_force_jacobian(const State&, const Vec3&, Eigen::Ref<MatX>) const {
+  // r = S(xi) e is linear in e: J^T F does not depend on q
+}
+
+}  // namespace seaflex

@@ -1,0 +1,129 @@
+// An ANCF beam: a mesh of N cable elements (ancf_cable) sharing N+1 nodes, each node
+// carrying r and r' (6 coordinates), thesis section 2.2. Node k's coordinates are
+// offset() + 6k ... offset() + 6k + 5, so element k's 12 coordinates are contiguous.
+// The stress-free shape of every element is straight with its reference length; a
+// polyline start shape is a first guess for statics, not a stress-free curve.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "seaflex/elements/ancf_cable.hpp"
+#include "seaflex/elements/ancf_cable_elastic.hpp"
+#include "seaflex/model/attachment.hpp"
+#include "seaflex/model/body.hpp"
+
+namespace seaflex {
+
+/// Cross-section and material of a beam. All SI.
+struct BeamSection {
+  double area = 0.0;            ///< A (m^2)
+  double second_moment = 0.0;   ///< I (m^4), same in both bending planes
+  double youngs_modulus = 0.0;  ///< E (Pa)
+  double density = 0.0;         ///< rho (kg/m^3)
+  double outer_diameter = 0.0;  ///< m; 0 when the section was given as A and I
+  double inner_diameter = 0.0;  ///< m
+
+  /// Pipe section from outer and inner diameter: A = pi/4 (Do^2 - Di^2), I = pi/64 (Do^4 - Di^4).
+  static BeamSection pipe(double outer_diameter, double inner_diameter, double youngs_modulus,
+                          double density);
+  double EA() const { return youngs_modulus * area; }
+  double EI() const { return youngs_modulus * second_moment; }
+  double mass_per_length() const { return density * area; }
+};
+
+/// Initial node positions and unit slopes, and the reference length of each element.
+struct BeamGeometry {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> slopes;
+  std::vector<double> element_lengths;
+
+  /// n equal elements on the segment start -> end.
+  static BeamGeometry straight(const Vec3& start, const Vec3& end, int elements);
+  /// counts[i] equal elements on segment i of the polyline; interior vertex slopes are the
+  /// normalized mean of the adjacent segment directions.
+  static BeamGeometry polyline(const std::vector<Vec3>& points, const std::vector<int>& counts);
+};
+
+struct BeamOptions {
+  ancf_cable::AxialModel axial = ancf_cable::AxialModel::kExact;
+  ancf_cable::BendingModel bending = ancf_cable::BendingModel::kExact;
+  int gauss_points = 5;
+};
+
+class AncfBeam : public Body {
+ public:
+  AncfBeam(std::string name, BeamGeometry geometry, BeamSection section, BeamOptions options);
+
+  std::string_view kind() const override { return "ancf_beam"; }
+  Index num_coordinates() const override { return 6 * num_nodes(); }
+  void write_initial_state(VecX& q, VecX& v) const override;
+  void declare_blocks(math::SparseBlockAssembler& matrix) override;
+  void assemble(const State& state, AssemblyTarget& target) const override;
+  bool constant_mass() const override { return true; }
+  void add_gravity(const Vec3& g, const State& state, AssemblyTarget& target) const override;
+  double gravity_potential(const Vec3& g, const State& state) const override;
+  double kinetic_energy(const State& state) const override;
+  double strain_energy(const State& state) const override;
+  std::string coordinate_name(Index local) const override;
+  void add_channels(ChannelList& channels) const override;
+
+  int num_elements() const { return static_cast<int>(element_lengths_.size()); }
+  int num_nodes() const { return num_elements() + 1; }
+  double element_length(int k) const { return element_lengths_[k]; }
+  /// Total reference (unstretched) length (m).
+  double length() const { return total_length_; }
+  /// Reference arc length of node k from the start node (m).
+  double node_arc_length(int k) const { return node_arc_[k]; }
+  const BeamSection& section() const { return section_; }
+  const BeamOptions& options() const { return options_; }
+
+  /// Global index of the first coordinate of node k (r), r' follows at +3.
+  Index node_index(int k) const { return offset() + 6 * k; }
+  /// Element k's 12 coordinates from q.
+  ancf_cable::Vec12 element_coordinates(const VecX& q, int k) const {
+    return q.segment<12>(node_index(k));
+  }
+  /// Element kernels (elasticity of element k).
+  const ancf_cable::CableElasticity& elasticity(int k) const { return kernels_[kernel_of_[k]]; }
+
+  /// Element and local xi of the reference arc length s in [0, length()].
+  std::pair<int, double> locate(double s) const;
+
+ private:
+  BeamGeometry geometry_;
+  BeamSection section_;
+  BeamOptions options_;
+  std::vector<double> element_lengths_;
+  std::vector<double> node_arc_;
+  double total_length_ = 0.0;
+  std::vector<ancf_cable::CableElasticity> kernels_;  // one per distinct element length
+  std::vector<ancf_cable::Mat12> masses_;             // per distinct length
+  std::vector<int> kernel_of_;                        // element -> kernel
+  std::vector<math::BlockId> blocks_;                 // element -> matrix block
+};
+
+/// A point of an ANCF beam at a reference arc length: r = S(xi) e (thesis eq. 3).
+/// At a node it depends on the node's three position coordinates only.
+class BeamPointAttachment : public Attachment {
+ public:
+  /// s: reference arc length from the start node (m), 0 <= s <= beam.length().
+  BeamPointAttachment(const AncfBeam& beam, double s);
+  /// Exactly at node k.
+  static std::unique_ptr<BeamPointAttachment> at_node(const AncfBeam& beam, int k);
+
+  std::string describe() const override;
+  std::vector<Index> coordinates() const override;
+  Vec3 position(const State& state) const override;
+  void jacobian(const State& state, Eigen::Ref<MatX> J) const override;
+  void add_force_jacobian(const State& state, const Vec3& F, Eigen::Ref<MatX> dQdq) const override;
+
+ private:
+  const AncfBeam& beam_;
+  int node_ = -1;  // >= 0 when exactly at a node
+  int element_ = 0;
+  double xi_ = 0.0;
+  double s_ = 0.0;
+};
+
+}  // namespace seaflex

@@ -1,0 +1,133 @@
+#include "seaflex/integrators/rk4_augmented.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace seaflex {
+
+Rk4Augmented::Rk4Augmented(Stabilization stabilization, double alpha, double beta)
+    : stabilization_(stabilization), alpha_(alpha), beta_(beta) {}
+
+void Rk4Augmented::prepare(const Dae& dae) {
+  n_ = dae.num_coordinates();
+  m_ = dae.num_constraints();
+  eval_ = dae.make_eval();
+  constant_kkt_ = dae.constant_mass_kkt();
+  for (VecX* k : {&k1q_, &k2q_, &k3q_, &k4q_, &k1v_, &k2v_, &k3v_, &k4v_}) k->resize(n_);
+  rhs_.resize(n_ + m_);
+  sol_.resize(n_ + m_);
+  lambda_.resize(m_);
+  prepared_ = true;
+}
+
+bool Rk4Augmented::factor_at(const Dae& dae, const State& state) {
+  if (constant_kkt_ && solver_.factorized()) return true;
+  DaeRequest req;
+  req.forces = false;
+  req.constraints = false;
+  req.matrix = true;
+  req.scales.km = 1.0;
+  dae.evaluate(state, req, eval_);
+  if (!solver_.factorize(eval_.kkt.matrix())) {
+    failure_ = fmt::format("the augmented matrix [M C_q^T; C_q 0] is singular ({}): a body "
+                           "without mass or redundant constraints",
+                           solver_.message());
+    return false;
+  }
+  return true;
+}
+
+void Rk4Augmented::accelerations(const Dae& dae, const State& state, VecX& a, VecX& lambda) {
+  if (!prepared_) prepare(dae);
+  if (!factor_at(dae, state)) {
+    a = VecX::Constant(n_, std::nan(""));
+    return;
+  }
+  DaeRequest req;
+  req.forces = true;
+  req.constraints = true;
+  dae.evaluate(state, req, eval_);
+  rhs_.head(n_) = eval_.Q;
+  rhs_.tail(m_) = eval_.gamma;  // thesis eq. (133)
+  if (stabilization_ == Stabilization::kBaumgarte)
+    rhs_.tail(m_) -= 2.0 * alpha_ * eval_.Cdot + beta_ * beta_ * eval_.C;
+  solver_.solve(rhs_, sol_);
+  a = sol_.head(n_);
+  lambda = sol_.tail(m_);
+}
+
+bool Rk4Augmented::project(const Dae& dae, State& state, double& violation) {
+  DaeRequest req;
+  req.forces = false;
+  req.constraints = true;
+  const double tol = 1e-12 * std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+  // positions: [M C_q^T; C_q 0][dq; mu] = [0; -C], a Newton step towards C = 0
+  for (int it = 0; it < 5; ++it) {
+    dae.evaluate(state, req, eval_);
+    violation = eval_.C.lpNorm<Eigen::Infinity>();
+    if (violation <= tol) break;
+    if (!factor_at(dae, state)) return false;
+    rhs_.head(n_).setZero();
+    rhs_.tail(m_) = -eval_.C;
+    solver_.solve(rhs_, sol_);
+    state.q += sol_.head(n_);
+  }
+  // velocities: [M C_q^T; C_q 0][dv; mu] = [0; -(C_q v + C_t)]
+  dae.evaluate(state, req, eval_);
+  violation = eval_.C.lpNorm<Eigen::Infinity>();
+  if (!factor_at(dae, state)) return false;
+  rhs_.head(n_).setZero();
+  rhs_.tail(m_) = -eval_.Cdot;
+  solver_.solve(rhs_, sol_);
+  state.v += sol_.head(n_);
+  return true;
+}
+
+StepReport Rk4Augmented::step(const Dae& dae, State& state, double h) {
+  if (!prepared_) prepare(dae);
+  StepReport report;
+  failure_.clear();
+  stage_ = state;
+  // thesis eq. (179) on y = (q, v), y' = (v, q'')
+  k1q_ = state.v;
+  accelerations(dae, state, k1v_, lambda_);
+  stage_.t = state.t + 0.5 * h;
+  stage_.q = state.q + 0.5 * h * k1q_;
+  stage_.v = state.v + 0.5 * h * k1v_;
+  k2q_ = stage_.v;
+  accelerations(dae, stage_, k2v_, lambda_);
+  stage_.q = state.q + 0.5 * h * k2q_;
+  stage_.v = state.v + 0.5 * h * k2v_;
+  k3q_ = stage_.v;
+  accelerations(dae, stage_, k3v_, lambda_);
+  stage_.t = state.t + h;
+  stage_.q = state.q + h * k3q_;
+  stage_.v = state.v + h * k3v_;
+  k4q_ = stage_.v;
+  accelerations(dae, stage_, k4v_, lambda_);
+  state.q += (h / 6.0) * (k1q_ + 2.0 * k2q_ + 2.0 * k3q_ + k4q_);
+  state.v += (h / 6.0) * (k1v_ + 2.0 * k2v_ + 2.0 * k3v_ + k4v_);
+  state.t += h;
+  report.iterations = 4;
+  if (!failure_.empty()) {
+    report.ok = false;
+    report.message = failure_;
+    return report;
+  }
+  if (m_ > 0 && stabilization_ == Stabilization::kProjection) {
+    if (!project(dae, state, report.residual)) {
+      report.ok = false;
+      report.message = failure_;
+      return report;
+    }
+  } else if (m_ > 0) {
+    DaeRequest req;
+    req.forces = false;
+    dae.evaluate(state, req, eval_);
+    report.residual = eval_.C.lpNorm<Eigen::Infinity>();
+  }
+  return report;
+}
+
+}  // namespace seaflex

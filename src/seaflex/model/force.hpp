@@ -1,0 +1,36 @@
+// A force element: writes generalized forces and their exact tangents into the global
+// structures. It owns no coordinates; it is a const function of the state (memory, when
+// a force needs it, lives in State::z). External loads scale with the load factor
+// used by static load stepping.
+#pragma once
+
+#include <string>
+
+#include "seaflex/model/assembly.hpp"
+#include "seaflex/model/state.hpp"
+
+namespace seaflex {
+
+class Force {
+ public:
+  explicit Force(std::string name) : name_(std::move(name)) {}
+  virtual ~Force() = default;
+  Force(const Force&) = delete;
+  Force& operator=(const Force&) = delete;
+
+  const std::string& name() const { return name_; }
+
+  /// Called once after coordinates are numbered: declare matrix blocks (may be none).
+  virtual void declare_blocks(math::SparseBlockAssembler& matrix) = 0;
+
+  /// Adds load_factor * Q and its tangent as the target asks.
+  virtual void assemble(const State& state, double load_factor, AssemblyTarget& target) const = 0;
+
+  /// Potential energy when the force is conservative and time independent, else 0.
+  virtual double potential_energy(const State& state) const = 0;
+
+ private:
+  std::string name_;
+};
+
+}  // namespace seaflex

@@ -1,0 +1,137 @@
+#include "seaflex/solvers/statics.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "seaflex/core/errors.hpp"
+#include "seaflex/solvers/kkt_solver.hpp"
+
+namespace seaflex {
+
+namespace {
+
+struct Residual {
+  double force = 0.0;       // ||Q - C_q^T mu||_inf / scale
+  double constraint = 0.0;  // ||C||_inf
+  double merit = 0.0;       // for the line search
+  Index worst = 0;          // coordinate of the largest force residual
+  bool finite = true;
+};
+
+class NewtonStatics {
+ public:
+  NewtonStatics(const Dae& dae, const StaticsSettings& settings)
+      : dae_(dae), s_(settings), eval_(dae.make_eval()), n_(dae.num_coordinates()),
+        m_(dae.num_constraints()) {
+    rhs_.resize(n_ + m_);
+  }
+
+  // residual r = Q - C_q^T mu and the Newton matrix at the state (C_q^T mu is read off
+  // the KKT matrix, whose off-diagonal blocks hold C_q)
+  Residual residual(const State& state, double load_factor) {
+    DaeRequest req;
+    req.matrix = true;
+    req.scales.kq = 1.0;
+    req.multiplier_hessian = true;
+    req.load_factor = load_factor;
+    dae_.evaluate(state, req, eval_);
+    VecX lam_full = VecX::Zero(n_ + m_);
+    lam_full.tail(m_) = state.lambda;
+    const VecX CqT_mu = (eval_.kkt.matrix() * lam_full).head(n_);
+    r_ = eval_.Q - CqT_mu;
+    Residual res;
+    const double scale =
+        std::max({eval_.Q.lpNorm<Eigen::Infinity>(), CqT_mu.lpNorm<Eigen::Infinity>(), 1e-12});
+    res.force = r_.lpNorm<Eigen::Infinity>() / scale;
+    res.constraint = m_ > 0 ? eval_.C.lpNorm<Eigen::Infinity>() : 0.0;
+    res.finite = r_.allFinite() && eval_.C.allFinite();
+    r_.cwiseAbs().maxCoeff(&res.worst);
+    res.merit = std::sqrt(r_.squaredNorm() / (scale * scale) + eval_.C.squaredNorm());
+    return res;
+  }
+
+  // Newton iterations at a fixed load factor; true on convergence
+  bool solve(State& state, double load_factor, int& iterations, Residual& res) {
+    const double c_tol = 1e-10 * std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+    res = residual(state, load_factor);
+    for (int it = 0; it < s_.max_iterations; ++it) {
+      if (!res.finite) return false;
+      if (res.force <= s_.tolerance && res.constraint <= c_tol && it > 0) return true;
+      if (!solver_.factorize(eval_.kkt.matrix())) return false;
+      rhs_.head(n_) = r_;
+      rhs_.tail(m_) = -eval_.C;
+      solver_.solve(rhs_, dx_);
+      if (!dx_.allFinite()) return false;
+      ++iterations;
+      // backtracking line search on the merit function
+      const State start = state;
+      const double merit0 = res.merit;
+      double alpha = 1.0;
+      for (int ls = 0;; ++ls) {
+        state.q = start.q + alpha * dx_.head(n_);
+        state.lambda = start.lambda + alpha * dx_.tail(m_);
+        res = residual(state, load_factor);
+        if (!s_.line_search || (res.finite && res.merit <= (1.0 - 1e-4 * alpha) * merit0) ||
+            ls >= 8)
+          break;
+        alpha *= 0.5;
+      }
+      // converged on the update itself: the force residual is at round-off level
+      if (res.force <= s_.tolerance && res.constraint <= c_tol) return res.finite;
+    }
+    return false;
+  }
+
+  const Dae& dae_;
+  StaticsSettings s_;
+  DaeEval eval_;
+  KktSolver solver_;
+  Index n_, m_;
+  VecX r_, rhs_, dx_;
+};
+
+}  // namespace
+
+StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings& settings,
+                            const StaticsProgress& progress) {
+  NewtonStatics newton(dae, settings);
+  state.t = settings.time;
+  state.v.setZero();
+  if (state.lambda.size() != dae.num_constraints()) state.lambda = VecX::Zero(dae.num_constraints());
+  StaticsReport report;
+  double factor = 0.0;
+  double increment = 1.0 / std::max(1, settings.load_steps);
+  Residual res;
+  while (factor < 1.0) {
+    const double target = std::min(1.0, factor + increment);
+    const State saved = state;
+    int iterations = 0;
+    const bool ok = newton.solve(state, target, iterations, res);
+    report.iterations += iterations;
+    if (ok) {
+      factor = target;
+      ++report.increments;
+      report.residual = res.force;
+      report.constraint_violation = res.constraint;
+      if (progress) progress(factor, iterations, res.force);
+      continue;
+    }
+    state = saved;
+    increment *= 0.5;
+    if (increment < settings.min_increment) {
+      throw SolverError(
+          fmt::format("statics did not converge at load factor {:.6g} (last converged {:.6g}): "
+                      "relative residual {:.3e} after {} iterations, largest at {}; {}",
+                      target, factor, res.force, iterations, dae.coordinate_name(res.worst),
+                      res.finite ? "the structure may be unstable or a mechanism "
+                                   "(check supports), or the load too large for one increment"
+                                 : "NaN or Inf in the residual"),
+          settings.time);
+    }
+  }
+  return report;
+}
+
+}  // namespace seaflex

@@ -1,0 +1,42 @@
+// Static equilibrium: Newton-Raphson on the full nonlinear system
+//   Q(q; lambda_load) - C_q^T mu = 0,   C(q) = 0
+// with the exact tangent (kq = 1 in the KKT matrix), incremental load stepping
+// (the load factor scales external loads and gravity), step cutting on failure, and a
+// backtracking line search on the residual norm. The thesis could not compute statics
+// (section 4.2); this is seaflex's.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "seaflex/system/dae.hpp"
+
+namespace seaflex {
+
+struct StaticsSettings {
+  int load_steps = 1;         ///< initial number of equal load increments
+  int max_iterations = 50;    ///< Newton iterations per increment
+  double tolerance = 1e-8;    ///< residual relative to the largest force term
+  double min_increment = 1e-4;  ///< smallest load increment before giving up
+  double time = 0.0;          ///< time at which time-varying loads are evaluated
+  bool line_search = true;
+};
+
+struct StaticsReport {
+  int increments = 0;        ///< load increments taken
+  int iterations = 0;        ///< Newton iterations in all
+  double residual = 0.0;     ///< final relative force residual
+  double constraint_violation = 0.0;  ///< final max |C|
+};
+
+/// Called after each converged increment: (load factor, iterations, residual).
+using StaticsProgress = std::function<void(double, int, double)>;
+
+/// Solves for equilibrium starting from state (q, lambda used as the initial guess).
+/// On success the state holds q, v = 0 and the multipliers. Throws SolverError, naming
+/// the load factor, residual and worst coordinate, when it cannot converge; the state
+/// then holds the last converged increment.
+StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings& settings,
+                            const StaticsProgress& progress = {});
+
+}  // namespace seaflex

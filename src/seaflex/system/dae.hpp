@@ -1,0 +1,55 @@
+// The abstract constrained mechanical system that solvers and integrators see:
+//   M q'' + C_q^T lambda = Q(q, v, t),   C(q, t) = 0          (thesis eq. 132)
+// An integrator never includes a concrete element; a hand-written pendulum can drive
+// it in a test.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "seaflex/math/sparse_block_assembler.hpp"
+#include "seaflex/model/assembly.hpp"
+#include "seaflex/model/constraint.hpp"
+#include "seaflex/model/state.hpp"
+
+namespace seaflex {
+
+/// What one evaluation computes.
+struct DaeRequest {
+  bool forces = true;       ///< Q
+  bool constraints = true;  ///< C, Cdot = C_q v + C_t, gamma
+  bool matrix = false;      ///< the KKT matrix below
+  MatrixScales scales;      ///< km, kq, kv of the top-left block
+  double load_factor = 1.0;  ///< scales external loads (static load stepping)
+  /// adds kq * d(C_q^T lambda)/dq (state.lambda) to the top-left block (Newton methods)
+  bool multiplier_hessian = false;
+};
+
+/// Results and workspace of evaluations; allocated once by Dae::make_eval().
+/// kkt = [km M - kq dQ/dq - kv dQ/dv (+ kq d(C_q^T lambda)/dq),  C_q^T;  C_q,  0]
+struct DaeEval {
+  VecX Q;
+  VecX C;
+  VecX Cdot;
+  VecX gamma;
+  math::SparseBlockAssembler kkt;
+  std::vector<ConstraintEval> constraint_buffers;
+  std::vector<MatX> hessian_buffers;
+};
+
+class Dae {
+ public:
+  virtual ~Dae() = default;
+  virtual Index num_coordinates() const = 0;
+  virtual Index num_constraints() const = 0;
+  virtual DaeEval make_eval() const = 0;
+  virtual void evaluate(const State& state, const DaeRequest& request, DaeEval& out) const = 0;
+  /// True when M is constant and C_q is constant, so the KKT matrix with km = 1,
+  /// kq = kv = 0 never changes.
+  virtual bool constant_mass_kkt() const = 0;
+  /// Names for messages: "beam.n3.r'.z", "support beam.n0: x".
+  virtual std::string coordinate_name(Index i) const = 0;
+  virtual std::string constraint_name(Index row) const = 0;
+};
+
+}  // namespace seaflex

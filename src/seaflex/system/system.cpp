@@ -1,0 +1,169 @@
+#include "seaflex/system/system.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace seaflex {
+
+Body& System::add_body(std::unique_ptr<Body> body) {
+  if (finalized_) throw std::logic_error("System: add_body after finalize");
+  if (find_body(body->name())) throw std::invalid_argument("System: duplicate body " + body->name());
+  bodies_.push_back(std::move(body));
+  return *bodies_.back();
+}
+
+void System::add_force(std::unique_ptr<Force> force) {
+  if (finalized_) throw std::logic_error("System: add_force after finalize");
+  forces_.push_back(std::move(force));
+}
+
+void System::add_constraint(std::unique_ptr<Constraint> constraint) {
+  if (finalized_) throw std::logic_error("System: add_constraint after finalize");
+  constraints_.push_back(std::move(constraint));
+}
+
+const Body* System::find_body(std::string_view name) const {
+  for (const auto& b : bodies_)
+    if (b->name() == name) return b.get();
+  return nullptr;
+}
+
+void System::finalize() {
+  if (finalized_) throw std::logic_error("System: finalize twice");
+  n_ = 0;
+  for (auto& b : bodies_) {
+    b->set_offset(n_);
+    n_ += b->num_coordinates();
+  }
+  m_ = 0;
+  for (auto& c : constraints_) {
+    row_offset_.push_back(m_);
+    m_ += c->num_rows();
+  }
+  pattern_.resize(n_ + m_, n_ + m_);
+  for (auto& b : bodies_) b->declare_blocks(pattern_);
+  for (auto& f : forces_) f->declare_blocks(pattern_);
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = *constraints_[k];
+    constraint_dofs_.push_back(c.coordinates());
+    const auto& dofs = constraint_dofs_.back();
+    std::vector<Index> rows(c.num_rows());
+    for (Index r = 0; r < c.num_rows(); ++r) rows[r] = n_ + row_offset_[k] + r;
+    cq_block_.push_back(pattern_.declare_block(rows, dofs));
+    cqt_block_.push_back(pattern_.declare_block(dofs, rows));
+    hess_block_.push_back(c.is_linear() ? -1 : pattern_.declare_block(dofs, dofs));
+  }
+  pattern_.finalize();
+  finalized_ = true;
+}
+
+State System::initial_state() const {
+  if (!finalized_) throw std::logic_error("System: initial_state before finalize");
+  State s;
+  s.q = VecX::Zero(n_);
+  s.v = VecX::Zero(n_);
+  s.lambda = VecX::Zero(m_);
+  for (const auto& b : bodies_) b->write_initial_state(s.q, s.v);
+  return s;
+}
+
+DaeEval System::make_eval() const {
+  if (!finalized_) throw std::logic_error("System: make_eval before finalize");
+  DaeEval e;
+  e.Q = VecX::Zero(n_);
+  e.C = VecX::Zero(m_);
+  e.Cdot = VecX::Zero(m_);
+  e.gamma = VecX::Zero(m_);
+  e.kkt = pattern_;
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Index rows = constraints_[k]->num_rows();
+    const Index cols = static_cast<Index>(constraint_dofs_[k].size());
+    ConstraintEval ce{VecX::Zero(rows), MatX::Zero(rows, cols), VecX::Zero(rows), VecX::Zero(rows)};
+    e.constraint_buffers.push_back(std::move(ce));
+    e.hessian_buffers.push_back(constraints_[k]->is_linear() ? MatX() : MatX::Zero(cols, cols));
+  }
+  return e;
+}
+
+void System::evaluate(const State& state, const DaeRequest& request, DaeEval& out) const {
+  AssemblyTarget target;
+  target.scales = request.scales;
+  if (request.forces) {
+    out.Q.setZero();
+    target.forces = &out.Q;
+  }
+  if (request.matrix) {
+    out.kkt.set_zero();
+    target.matrix = &out.kkt;
+  }
+  if (target.forces || (target.matrix && request.scales.any())) {
+    for (const auto& b : bodies_) b->assemble(state, target);
+    for (const auto& f : forces_) f->assemble(state, request.load_factor, target);
+  }
+  if (!request.constraints && !request.matrix) return;
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const Constraint& c = *constraints_[k];
+    ConstraintEval& ce = out.constraint_buffers[k];
+    c.evaluate(state, ce);
+    const auto& dofs = constraint_dofs_[k];
+    const Index r0 = row_offset_[k];
+    if (request.constraints) {
+      out.C.segment(r0, c.num_rows()) = ce.C;
+      out.gamma.segment(r0, c.num_rows()) = ce.gamma;
+      VecX v_local(static_cast<Index>(dofs.size()));
+      for (std::size_t i = 0; i < dofs.size(); ++i) v_local[i] = state.v[dofs[i]];
+      out.Cdot.segment(r0, c.num_rows()) = ce.Cq * v_local + ce.Ct;
+    }
+    if (request.matrix) {
+      out.kkt.add(cq_block_[k], ce.Cq);
+      out.kkt.add_transposed(cqt_block_[k], ce.Cq);
+      if (request.multiplier_hessian && request.scales.kq != 0.0 && hess_block_[k] >= 0) {
+        MatX& H = out.hessian_buffers[k];
+        H.setZero();
+        c.add_multiplier_hessian(state, state.lambda.segment(r0, c.num_rows()), H);
+        out.kkt.add(hess_block_[k], H, request.scales.kq);
+      }
+    }
+  }
+}
+
+bool System::constant_mass_kkt() const {
+  for (const auto& b : bodies_)
+    if (!b->constant_mass()) return false;
+  for (const auto& c : constraints_)
+    if (!c->is_linear()) return false;
+  return true;
+}
+
+std::string System::coordinate_name(Index i) const {
+  for (const auto& b : bodies_)
+    if (i >= b->offset() && i < b->offset() + b->num_coordinates())
+      return b->coordinate_name(i - b->offset());
+  return fmt::format("q[{}]", i);
+}
+
+std::string System::constraint_name(Index row) const {
+  for (std::size_t k = 0; k < constraints_.size(); ++k)
+    if (row >= row_offset_[k] && row < row_offset_[k] + constraints_[k]->num_rows())
+      return constraints_[k]->row_name(row - row_offset_[k]);
+  return fmt::format("constraint row {}", row);
+}
+
+Energies System::energies(const State& state) const {
+  Energies e;
+  for (const auto& b : bodies_) {
+    e.kinetic += b->kinetic_energy(state);
+    e.strain += b->strain_energy(state);
+  }
+  for (const auto& f : forces_) e.potential += f->potential_energy(state);
+  return e;
+}
+
+ChannelList System::channels() const {
+  ChannelList list;
+  for (const auto& b : bodies_) b->add_channels(list);
+  return list;
+}
+
+}  // namespace seaflex

@@ -1,0 +1,71 @@
+// The System numbers coordinates, fixes the sparsity pattern once, and assembles
+// Q, C, C_q, gamma and the scaled Newton (KKT) matrix from its bodies, forces and
+// constraints. No solver logic and no I/O.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "seaflex/model/body.hpp"
+#include "seaflex/model/channel.hpp"
+#include "seaflex/model/constraint.hpp"
+#include "seaflex/model/force.hpp"
+#include "seaflex/system/dae.hpp"
+
+namespace seaflex {
+
+struct Energies {
+  double kinetic = 0.0;    ///< 1/2 v^T M v (J)
+  double strain = 0.0;     ///< elastic strain energy (J)
+  double potential = 0.0;  ///< potential of conservative forces, gravity included (J)
+  double total() const { return kinetic + strain + potential; }
+};
+
+class System : public Dae {
+ public:
+  System() = default;
+
+  Body& add_body(std::unique_ptr<Body> body);
+  void add_force(std::unique_ptr<Force> force);
+  void add_constraint(std::unique_ptr<Constraint> constraint);
+
+  /// Numbers coordinates and constraint rows and fixes the matrix pattern. Call once,
+  /// after everything has been added.
+  void finalize();
+  bool finalized() const { return finalized_; }
+
+  /// Body by name, or nullptr.
+  const Body* find_body(std::string_view name) const;
+  const std::vector<std::unique_ptr<Body>>& bodies() const { return bodies_; }
+  const std::vector<std::unique_ptr<Force>>& forces() const { return forces_; }
+  const std::vector<std::unique_ptr<Constraint>>& constraints() const { return constraints_; }
+
+  /// The initial state: coordinates and velocities from the bodies, zero multipliers.
+  State initial_state() const;
+
+  Energies energies(const State& state) const;
+  ChannelList channels() const;
+
+  // Dae
+  Index num_coordinates() const override { return n_; }
+  Index num_constraints() const override { return m_; }
+  DaeEval make_eval() const override;
+  void evaluate(const State& state, const DaeRequest& request, DaeEval& out) const override;
+  bool constant_mass_kkt() const override;
+  std::string coordinate_name(Index i) const override;
+  std::string constraint_name(Index row) const override;
+
+ private:
+  std::vector<std::unique_ptr<Body>> bodies_;
+  std::vector<std::unique_ptr<Force>> forces_;
+  std::vector<std::unique_ptr<Constraint>> constraints_;
+  bool finalized_ = false;
+  Index n_ = 0;
+  Index m_ = 0;
+  std::vector<Index> row_offset_;                 // constraint -> first row
+  std::vector<std::vector<Index>> constraint_dofs_;
+  std::vector<math::BlockId> cq_block_, cqt_block_, hess_block_;
+  math::SparseBlockAssembler pattern_;
+};
+
+}  // namespace seaflex

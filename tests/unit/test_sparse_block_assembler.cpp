@@ -1,0 +1,41 @@
+#include "seaflex/math/sparse_block_assembler.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace seaflex;
+
+// two overlapping blocks assemble to the same matrix as a dense reference
+TEST(SparseBlockAssembler, OverlappingBlocksSum) {
+  math::SparseBlockAssembler a(5, 5);
+  const std::vector<Index> d1{0, 1, 2}, d2{2, 3, 4}, rows{4}, cols{0, 1};
+  const auto b1 = a.declare_block(d1, d1);
+  const auto b2 = a.declare_block(d2, d2);
+  const auto b3 = a.declare_block(rows, cols);
+  const auto b3t = a.declare_block(cols, rows);
+  a.finalize();
+  MatX m1 = MatX::Random(3, 3), m2 = MatX::Random(3, 3), m3 = MatX::Random(1, 2);
+  a.set_zero();
+  a.add(b1, m1);
+  a.add(b2, m2, 2.0);
+  a.add(b3, m3);
+  a.add_transposed(b3t, m3);
+  MatX ref = MatX::Zero(5, 5);
+  ref.block(0, 0, 3, 3) += m1;
+  ref.block(2, 2, 3, 3) += 2.0 * m2;
+  ref.block(4, 0, 1, 2) += m3;
+  ref.block(0, 4, 2, 1) += m3.transpose();
+  EXPECT_LT((MatX(a.matrix()) - ref).norm(), 1e-15);
+  // set_zero keeps the pattern and clears values
+  a.set_zero();
+  EXPECT_EQ(MatX(a.matrix()).norm(), 0.0);
+  EXPECT_EQ(a.matrix().nonZeros(), 9 + 9 - 1 + 2 + 2);
+}
+
+TEST(SparseBlockAssembler, RejectsOutOfRangeAndLateDeclarations) {
+  math::SparseBlockAssembler a(2, 2);
+  const std::vector<Index> bad{2};
+  EXPECT_THROW(a.declare_block(bad, bad), std::out_of_range);
+  a.finalize();
+  const std::vector<Index> ok{0};
+  EXPECT_THROW(a.declare_block(ok, ok), std::logic_error);
+}

@@ -1,0 +1,113 @@
+// The assembled system: its Newton matrix equals the central difference of the assembled
+// forces (every body, force and constraint together), C_q equals the difference of C,
+// and the mass block is the assembled eq. (10).
+#include <gtest/gtest.h>
+
+#include "seaflex/constraints/coordinate_lock.hpp"
+#include "seaflex/elements/ancf_beam.hpp"
+#include "seaflex/forces/distributed_load.hpp"
+#include "seaflex/forces/gravity.hpp"
+#include "seaflex/forces/point_load.hpp"
+#include "seaflex/system/system.hpp"
+
+using namespace seaflex;
+
+namespace {
+
+std::unique_ptr<System> make_system(ancf_cable::AxialModel axial,
+                                    ancf_cable::BendingModel bending) {
+  auto sys = std::make_unique<System>();
+  BeamOptions opt;
+  opt.axial = axial;
+  opt.bending = bending;
+  auto& beam = static_cast<AncfBeam&>(sys->add_body(std::make_unique<AncfBeam>(
+      "beam", BeamGeometry::straight(Vec3(0, 0, 0), Vec3(4, 1, -1), 4),
+      BeamSection::pipe(0.3, 0.25, 2.1e11, 7850), opt)));
+  sys->add_force(std::make_unique<Gravity>(Vec3(0, 0, -9.81), std::vector<const Body*>{&beam}));
+  sys->add_force(std::make_unique<PointLoad>("tip", std::make_unique<BeamPointAttachment>(beam, 2.7),
+                                             VectorSignal(Vec3(100, 2e3, -5e3), TimeSignal::constant(1))));
+  sys->add_force(std::make_unique<DistributedLoad>("wind", beam, 1, 2,
+                                                   VectorSignal(Vec3(0, 50, 0), TimeSignal::constant(1))));
+  sys->add_constraint(std::make_unique<CoordinateLock>(
+      "support", beam, std::vector<Index>{0, 1, 2, 3, 4, 5},
+      std::vector<double>{0, 0, 0, 0.9, 0.2, -0.2},
+      std::vector<std::string>{"x", "y", "z", "dx", "dy", "dz"}));
+  sys->finalize();
+  return sys;
+}
+
+}  // namespace
+
+TEST(SystemJacobians, NewtonMatrixMatchesFiniteDifferences) {
+  using ancf_cable::AxialModel;
+  using ancf_cable::BendingModel;
+  for (auto axial : {AxialModel::kExact, AxialModel::kL1, AxialModel::kL2})
+    for (auto bending : {BendingModel::kExact, BendingModel::kT1, BendingModel::kT2}) {
+      auto sys = make_system(axial, bending);
+      State s = sys->initial_state();
+      s.q += 0.02 * VecX::Random(s.q.size());  // a deformed configuration
+      DaeEval ev = sys->make_eval();
+      const Index n = sys->num_coordinates();
+      DaeRequest req;
+      req.matrix = true;
+      req.scales.kq = -1.0;  // matrix top-left = +dQ/dq
+      sys->evaluate(s, req, ev);
+      const MatX A = MatX(ev.kkt.matrix());
+      const MatX dQdq = A.topLeftCorner(n, n);
+      MatX fd(n, n);
+      DaeEval ev2 = sys->make_eval();
+      DaeRequest fr;
+      for (Index j = 0; j < n; ++j) {
+        const double h = 1e-6;
+        State sp = s, sm = s;
+        sp.q[j] += h;
+        sm.q[j] -= h;
+        sys->evaluate(sp, fr, ev2);
+        const VecX Qp = ev2.Q;
+        sys->evaluate(sm, fr, ev2);
+        fd.col(j) = (Qp - ev2.Q) / (2 * h);
+      }
+      EXPECT_LT((dQdq - fd).norm(), 1e-6 * dQdq.norm())
+          << to_string(axial) << "/" << to_string(bending);
+      // C_q in the off-diagonal blocks: C = q_i - value for the locked coordinates
+      const Index m = sys->num_constraints();
+      const MatX Cq = A.bottomLeftCorner(m, n);
+      EXPECT_EQ(Cq.rows(), 6);
+      EXPECT_LT((Cq - MatX::Identity(6, n)).norm(), 1e-15);
+      EXPECT_LT((A.topRightCorner(n, m) - Cq.transpose()).norm(), 1e-15);
+    }
+}
+
+TEST(SystemJacobians, MassBlockAndEnergies) {
+  auto sys = make_system(ancf_cable::AxialModel::kExact, ancf_cable::BendingModel::kExact);
+  State s = sys->initial_state();
+  DaeEval ev = sys->make_eval();
+  DaeRequest req;
+  req.forces = false;
+  req.matrix = true;
+  req.scales.km = 1.0;
+  sys->evaluate(s, req, ev);
+  const Index n = sys->num_coordinates();
+  const MatX M = MatX(ev.kkt.matrix()).topLeftCorner(n, n);
+  // a uniform velocity u of the whole beam: 1/2 u^T M u = 1/2 m |u|^2
+  VecX u = VecX::Zero(n);
+  for (Index k = 0; k < n; k += 6) u.segment<3>(k) = Vec3(1, 2, 3);
+  const double mass = 7850 * BeamSection::pipe(0.3, 0.25, 2.1e11, 7850).area * std::sqrt(18.0);
+  EXPECT_NEAR(u.dot(M * u), mass * 14.0, 1e-9 * mass);
+  s.v = u;
+  EXPECT_NEAR(sys->energies(s).kinetic, 0.5 * mass * 14.0, 1e-9 * mass);
+  // undeformed straight beam: no strain energy; gravity potential -m g . r_cm
+  EXPECT_LT(sys->energies(s).strain, 1e-9);
+  const double z_cm = -0.5;
+  EXPECT_NEAR(sys->energies(s).potential, mass * 9.81 * z_cm, 1e-9 * mass);
+}
+
+TEST(SystemJacobians, NamesCoordinatesAndRows) {
+  auto sys = make_system(ancf_cable::AxialModel::kExact, ancf_cable::BendingModel::kExact);
+  EXPECT_EQ(sys->coordinate_name(0), "beam.n0.r.x");
+  EXPECT_EQ(sys->coordinate_name(6 * 3 + 5), "beam.n3.r'.z");
+  EXPECT_EQ(sys->constraint_name(4), "support: dy");
+  EXPECT_EQ(sys->num_coordinates(), 30);
+  EXPECT_EQ(sys->channels().size(), 15u);
+  EXPECT_EQ(sys->channels()[4].name, "beam.n1.y");
+}
