@@ -1,0 +1,250 @@
+// seaflex command line: check, statics, run, modes. Exit codes: 0 success, 2 input or
+// usage error, 3 solver failure (results up to the failure stay on disk).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+
+#include "seaflex/core/errors.hpp"
+#include "seaflex/io/csv_recorder.hpp"
+#include "seaflex/io/model_loader.hpp"
+#include "seaflex/simulation/simulation.hpp"
+#include "seaflex/solvers/modal.hpp"
+#include "seaflex/solvers/statics.hpp"
+
+namespace fs = std::filesystem;
+using namespace seaflex;
+
+namespace {
+
+constexpr int kExitInput = 2;
+constexpr int kExitSolver = 3;
+
+// a progress line on stderr, shown only when a run lasts more than two seconds
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool quiet) : quiet_(quiet), start_(Clock::now()), last_(start_) {}
+  ~ProgressLine() { done(); }
+  void update(double t, double duration) {
+    if (quiet_) return;
+    const auto now = Clock::now();
+    const double elapsed = seconds(now - start_);
+    if (elapsed < 2.0 || seconds(now - last_) < 0.5) return;
+    last_ = now;
+    const double frac = duration > 0 ? t / duration : 1.0;
+    const double eta = frac > 0 ? elapsed * (1.0 - frac) / frac : 0.0;
+    std::fprintf(stderr, "\r[seaflex] t = %.4g / %.4g s  %3.0f%%  elapsed %.1f s  remaining %.1f s  ",
+                 t, duration, 100.0 * frac, elapsed, eta);
+    shown_ = true;
+  }
+  void done() {
+    if (shown_) std::fputc('\n', stderr);
+    shown_ = false;
+  }
+  double elapsed() const { return seconds(Clock::now() - start_); }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  static double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+  bool quiet_;
+  Clock::time_point start_, last_;
+  bool shown_ = false;
+};
+
+void make_output_dir(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError({Diagnostic{dir.string(), 0, 0, "", "cannot create the output directory: " +
+                                                             (ec ? ec.message() : "not a directory")}});
+}
+
+void write_single_row(const fs::path& path, const System& system, const State& state) {
+  io::CsvRecorder csv(path);
+  const ChannelList channels = system.channels();
+  std::vector<std::string> names;
+  std::vector<double> values;
+  for (const auto& c : channels) {
+    names.push_back(c.name);
+    values.push_back(c.value(state));
+  }
+  csv.begin(names);
+  csv.record(state.t, values);
+}
+
+void print_summary(const io::Model& model) {
+  const System& sys = *model.system;
+  fmt::print("model: {}{}\n", model.file, model.title.empty() ? "" : " (" + model.title + ")");
+  fmt::print("bodies: {}\n", sys.bodies().size());
+  for (const auto& b : sys.bodies()) fmt::print("  {} [{}]: {}\n", b->name(), b->kind(), b->summary());
+  fmt::print("constraints: {} ({} rows)\n", sys.constraints().size(), sys.num_constraints());
+  for (const auto& c : sys.constraints()) {
+    std::string rows;
+    for (Index r = 0; r < c->num_rows(); ++r) rows += (r ? ", " : "") + c->row_name(r).substr(c->name().size() + 2);
+    fmt::print("  {}: {}\n", c->name(), rows);
+  }
+  fmt::print("forces: {}\n", sys.forces().size());
+  for (const auto& f : sys.forces()) fmt::print("  {}\n", f->name());
+  fmt::print("gravity: ({:g}, {:g}, {:g}) m/s^2\n", model.gravity.x(), model.gravity.y(), model.gravity.z());
+  fmt::print("coordinates: {}, constraint rows: {}, output channels: {}\n", sys.num_coordinates(),
+             sys.num_constraints(), sys.channels().size());
+  fmt::print("statics: {} load step(s), tolerance {:g}, max {} iterations per step, loads at t = {:g} s\n",
+             model.statics.load_steps, model.statics.tolerance, model.statics.max_iterations,
+             model.statics.time);
+  if (model.dynamics) {
+    const auto& d = *model.dynamics;
+    fmt::print("dynamics: {}, time step {:g} s, duration {:g} s ({} steps), output every {:g} s, start from {}\n",
+               d.integrator, d.time_step, d.duration, std::lround(d.duration / d.time_step),
+               d.output_interval, d.start_from_statics ? "static equilibrium" : "the model's initial state");
+  } else {
+    fmt::print("dynamics: none (add a dynamics section to use 'seaflex run')\n");
+  }
+}
+
+// statics with a report on stdout; on failure the last converged state goes to
+// statics_partial.csv before the error propagates
+State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
+  State state = model.system->initial_state();
+  try {
+    const StaticsReport rep = solve_statics(
+        *model.system, state, model.statics, [&](double factor, int iterations, double residual) {
+          if (!quiet && model.statics.load_steps > 1)
+            std::fprintf(stderr, "[seaflex] statics: load factor %.4g converged in %d iterations, residual %.2e\n",
+                         factor, iterations, residual);
+        });
+    fmt::print("statics converged: {} load increment(s), {} Newton iterations, relative residual {:.2e}, "
+               "constraint violation {:.2e}\n",
+               rep.increments, rep.iterations, rep.residual, rep.constraint_violation);
+  } catch (const SolverError&) {
+    write_single_row(dir / "statics_partial.csv", *model.system, state);
+    std::fprintf(stderr, "seaflex: the last converged statics increment is in %s\n",
+                 (dir / "statics_partial.csv").c_str());
+    throw;
+  }
+  write_single_row(dir / "statics.csv", *model.system, state);
+  return state;
+}
+
+int cmd_check(const std::string& file) {
+  const io::Model model = io::load_model_file(file);
+  print_summary(model);
+  fmt::print("model OK\n");
+  return 0;
+}
+
+int cmd_statics(const std::string& file, const fs::path& dir, bool quiet) {
+  const io::Model model = io::load_model_file(file);
+  make_output_dir(dir);
+  run_statics(model, dir, quiet);
+  fmt::print("wrote {}\n", (dir / "statics.csv").string());
+  return 0;
+}
+
+int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
+  const io::Model model = io::load_model_file(file);
+  if (!model.dynamics)
+    throw InputError({Diagnostic{file, 0, 0, "dynamics",
+                                 "'seaflex run' needs a dynamics section (time_step, duration); "
+                                 "see docs/model-format.md"}});
+  make_output_dir(dir);
+  const auto& d = *model.dynamics;
+  State state = d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
+  auto integrator = d.make_integrator();
+  Simulation sim(*model.system, model.system->channels(), *integrator,
+                 SimulationSettings{d.duration, d.time_step, d.output_interval});
+  io::CsvRecorder csv(dir / "timeseries.csv");
+  sim.add_recorder(csv);
+  ProgressLine progress(quiet);
+  sim.set_progress([&](double t, double T) { progress.update(t, T); });
+  try {
+    const SimulationReport rep = sim.run(state);
+    progress.done();
+    fmt::print("dynamics: {} steps of {:g} s to t = {:g} s in {:.2f} s wall time; {} rows; max constraint "
+               "violation {:.2e}\nwrote {}\n",
+               rep.steps, d.time_step, rep.end_time, progress.elapsed(), rep.rows,
+               rep.max_constraint_violation, (dir / "timeseries.csv").string());
+  } catch (const SolverError&) {
+    progress.done();
+    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", (dir / "timeseries.csv").c_str());
+    throw;
+  }
+  return 0;
+}
+
+int cmd_modes(const std::string& file, const fs::path& dir, int count, bool about_initial, bool quiet) {
+  const io::Model model = io::load_model_file(file);
+  make_output_dir(dir);
+  const State state = about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
+  const ModalResult modes = solve_modes(*model.system, state, count);
+  std::FILE* out = std::fopen((dir / "modes.csv").c_str(), "w");
+  if (!out) throw InputError({Diagnostic{(dir / "modes.csv").string(), 0, 0, "", "cannot write"}});
+  std::fprintf(out, "mode,frequency_hz,period_s,omega_rad_s\n");
+  fmt::print("{:>5} {:>14} {:>14}\n", "mode", "frequency (Hz)", "period (s)");
+  for (Index k = 0; k < modes.omega.size(); ++k) {
+    const double f = modes.frequency_hz[k];
+    const double T = f > 0 ? 1.0 / f : INFINITY;
+    std::fprintf(out, "%ld,%.17g,%.17g,%.17g\n", static_cast<long>(k + 1), f, T, modes.omega[k]);
+    fmt::print("{:>5} {:>14.6g} {:>14.6g}\n", k + 1, f, T);
+  }
+  std::fclose(out);
+  fmt::print("wrote {}\n", (dir / "modes.csv").string());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"seaflex: flexible multibody dynamics of offshore structures (ANCF beams)"};
+  app.require_subcommand(1);
+  std::string file;
+  std::string dir = "results";
+  bool quiet = false;
+  int count = 10;
+  bool about_initial = false;
+
+  auto* check = app.add_subcommand("check", "validate a model and print a summary");
+  check->add_option("MODEL", file, "model file (YAML)")->required();
+  auto* statics = app.add_subcommand("statics", "static equilibrium; writes DIR/statics.csv");
+  statics->add_option("MODEL", file, "model file (YAML)")->required();
+  statics->add_option("-o,--output", dir, "output directory")->capture_default_str();
+  statics->add_flag("-q,--quiet", quiet, "no progress messages");
+  auto* run = app.add_subcommand("run", "dynamic simulation; writes DIR/timeseries.csv");
+  run->add_option("MODEL", file, "model file (YAML)")->required();
+  run->add_option("-o,--output", dir, "output directory")->capture_default_str();
+  run->add_flag("-q,--quiet", quiet, "no progress line");
+  auto* modes = app.add_subcommand("modes", "natural frequencies about static equilibrium; writes DIR/modes.csv");
+  modes->add_option("MODEL", file, "model file (YAML)")->required();
+  modes->add_option("-o,--output", dir, "output directory")->capture_default_str();
+  modes->add_option("-n,--count", count, "number of modes")->check(CLI::PositiveNumber)->capture_default_str();
+  modes->add_flag("--about-initial", about_initial, "linearize about the initial state instead of statics");
+  modes->add_flag("-q,--quiet", quiet, "no progress messages");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kExitInput;
+  }
+  try {
+    if (*check) return cmd_check(file);
+    if (*statics) return cmd_statics(file, dir, quiet);
+    if (*run) return cmd_run(file, dir, quiet);
+    if (*modes) return cmd_modes(file, dir, count, about_initial, quiet);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kExitInput;
+  } catch (const ModelError& e) {
+    std::fprintf(stderr, "seaflex: model error: %s\n", e.what());
+    return kExitInput;
+  } catch (const SolverError& e) {
+    std::fprintf(stderr, "seaflex: solver failure: %s\n", e.what());
+    return kExitSolver;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "seaflex: error: %s\n", e.what());
+    return kExitInput;
+  }
+  return 0;
+}

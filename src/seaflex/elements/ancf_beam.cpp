@@ -170,6 +170,15 @@ void AncfBeam::add_channels(ChannelList& channels) const {
     }
 }
 
+std::string AncfBeam::summary() const {
+  return fmt::format(
+      "{} elements, {} nodes, {} coordinates; length {:g} m, mass {:.6g} kg; EA {:.4g} N, "
+      "EI {:.4g} N m^2; axial {}, bending {}",
+      num_elements(), num_nodes(), num_coordinates(), total_length_,
+      section_.mass_per_length() * total_length_, section_.EA(), section_.EI(),
+      ancf_cable::to_string(options_.axial), ancf_cable::to_string(options_.bending));
+}
+
 std::pair<int, double> AncfBeam::locate(double s) const {
   if (s < 0.0 || s > total_length_ * (1.0 + 1e-12))
     throw std::out_of_range(fmt::format("arc length {} m outside beam {} of length {} m", s,

@@ -67,6 +67,7 @@ class AncfBeam : public Body {
   double strain_energy(const State& state) const override;
   std::string coordinate_name(Index local) const override;
   void add_channels(ChannelList& channels) const override;
+  std::string summary() const override;
 
   int num_elements() const { return static_cast<int>(element_lengths_.size()); }
   int num_nodes() const { return num_elements() + 1; }
@@ -76,6 +77,8 @@ class AncfBeam : public Body {
   /// Reference arc length of node k from the start node (m).
   double node_arc_length(int k) const { return node_arc_[k]; }
   const BeamSection& section() const { return section_; }
+  /// Initial node positions and slopes, as built.
+  const BeamGeometry& initial_geometry() const { return geometry_; }
   const BeamOptions& options() const { return options_; }
 
   /// Global index of the first coordinate of node k (r), r' follows at +3.

@@ -1,0 +1,296 @@
+#include "seaflex/io/yaml_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace seaflex::io {
+
+void Diagnostics::error(const YAML::Mark& mark, std::string key, std::string message) {
+  Diagnostic d;
+  d.file = file_;
+  d.line = mark.is_null() ? 0 : mark.line + 1;
+  d.column = mark.is_null() ? 0 : mark.column + 1;
+  d.key = std::move(key);
+  d.message = std::move(message);
+  list_.push_back(std::move(d));
+}
+
+void Diagnostics::throw_if_any() const {
+  if (list_.empty()) return;
+  std::vector<Diagnostic> sorted = list_;
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+  });
+  throw InputError(std::move(sorted));
+}
+
+namespace {
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t sub = prev[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+}  // namespace
+
+std::string closest_match(std::string_view name, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::string::npos;
+  for (const auto& c : candidates) {
+    const std::size_t d = edit_distance(name, c);
+    if (d < best_d) {
+      best_d = d;
+      best = c;
+    }
+  }
+  // close enough: at most a third of the longer name, and at least one letter
+  const std::size_t limit = std::max<std::size_t>(1, std::max(name.size(), best.size()) / 3);
+  return best_d <= limit ? best : std::string();
+}
+
+std::string suggestion(std::string_view name, const std::vector<std::string>& candidates) {
+  const std::string best = closest_match(name, candidates);
+  if (!best.empty()) return fmt::format("did you mean '{}'?", best);
+  if (candidates.empty()) return "nothing is expected here";
+  return fmt::format("expected one of: {}", fmt::join(candidates, ", "));
+}
+
+std::string describe(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Scalar: return fmt::format("'{}'", node.Scalar());
+    case YAML::NodeType::Sequence: return "a list";
+    case YAML::NodeType::Map: return "a mapping";
+    case YAML::NodeType::Null: return "nothing";
+    default: return "nothing";
+  }
+}
+
+std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node,
+                                  const std::string& key, const NumberRule& rule) {
+  const std::string unit = rule.unit.empty() ? "" : " " + rule.unit;
+  if (!node.IsScalar()) {
+    diag.error(node.Mark(), key, fmt::format("expected a number{}, got {}", unit, describe(node)));
+    return std::nullopt;
+  }
+  const std::string& s = node.Scalar();
+  double value = 0.0;
+  const char* first = s.data();
+  const char* last = s.data() + s.size();
+  if (first != last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec != std::errc() || ptr != last || s.empty()) {
+    diag.error(node.Mark(), key, fmt::format("expected a number{}, got '{}'", unit, s));
+    return std::nullopt;
+  }
+  if (!std::isfinite(value)) {
+    diag.error(node.Mark(), key, fmt::format("must be a finite number, got '{}'", s));
+    return std::nullopt;
+  }
+  const bool low = rule.min_exclusive ? !(value > rule.min) : !(value >= rule.min);
+  if (low || value > rule.max) {
+    std::string expected;
+    if (std::isinf(rule.max))
+      expected = fmt::format("{} {:g}{}", rule.min_exclusive ? "greater than" : "at least",
+                             rule.min, unit);
+    else if (std::isinf(rule.min))
+      expected = fmt::format("at most {:g}{}", rule.max, unit);
+    else
+      expected = fmt::format("between {:g} and {:g}{}", rule.min, rule.max, unit);
+    diag.error(node.Mark(), key, fmt::format("must be {}, got {}", expected, s));
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::optional<int> read_integer(Diagnostics& diag, const YAML::Node& node, const std::string& key,
+                                int min, int max) {
+  if (!node.IsScalar()) {
+    diag.error(node.Mark(), key, fmt::format("expected a whole number, got {}", describe(node)));
+    return std::nullopt;
+  }
+  const std::string& s = node.Scalar();
+  long long value = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (ec == std::errc::result_out_of_range ||
+      (ec == std::errc() && ptr == s.data() + s.size() && (value < min || value > max))) {
+    diag.error(node.Mark(), key, fmt::format("must be between {} and {}, got {}", min, max, s));
+    return std::nullopt;
+  }
+  if (ec != std::errc() || ptr != s.data() + s.size() || s.empty()) {
+    diag.error(node.Mark(), key, fmt::format("expected a whole number, got '{}'", s));
+    return std::nullopt;
+  }
+  return static_cast<int>(value);
+}
+
+std::optional<Vec3> read_vec3(Diagnostics& diag, const YAML::Node& node, const std::string& key,
+                              std::string_view unit) {
+  if (!node.IsSequence() || node.size() != 3) {
+    diag.error(node.Mark(), key,
+               fmt::format("expected a list of three numbers [x, y, z]{}{}, got {}",
+                           unit.empty() ? "" : " in ", unit,
+                           node.IsSequence() ? fmt::format("{} entries", node.size()) : describe(node)));
+    return std::nullopt;
+  }
+  Vec3 v;
+  bool ok = true;
+  for (int i = 0; i < 3; ++i) {
+    const auto x = read_number(diag, node[i], fmt::format("{}[{}]", key, i), NumberRule::any(std::string(unit)));
+    if (x)
+      v[i] = *x;
+    else
+      ok = false;
+  }
+  return ok ? std::optional<Vec3>(v) : std::nullopt;
+}
+
+MapReader::MapReader(Diagnostics& diag, YAML::Node node, std::string path)
+    : diag_(diag), node_(std::move(node)), path_(std::move(path)) {
+  if (!node_.IsMap()) {
+    diag_.error(node_.Mark(), path_, fmt::format("expected a mapping of keys, got {}", describe(node_)));
+    return;
+  }
+  valid_ = true;
+  // duplicate keys: YAML forbids them, yaml-cpp keeps both
+  std::vector<std::string> seen;
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.Scalar();
+    if (std::find(seen.begin(), seen.end(), k) != seen.end())
+      diag_.error(kv.first.Mark(), key_path(k), "duplicate key");
+    seen.push_back(k);
+  }
+}
+
+std::string MapReader::key_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
+}
+
+bool MapReader::has(std::string_view key) {
+  known_.emplace_back(key);
+  return valid_ && node_[std::string(key)].IsDefined() && !node_[std::string(key)].IsNull();
+}
+
+YAML::Node MapReader::get(std::string_view key, Need need, std::string_view hint) {
+  const bool present = has(key);
+  if (!present) {
+    if (valid_ && need == Need::kRequired)
+      diag_.error(node_.Mark(), key_path(key),
+                  hint.empty() ? std::string("required key is missing")
+                               : fmt::format("required key is missing ({})", hint));
+    return YAML::Node(YAML::NodeType::Undefined);
+  }
+  return node_[std::string(key)];
+}
+
+void MapReader::error(std::string_view key, std::string message) {
+  const YAML::Node n = valid_ ? node_[std::string(key)] : YAML::Node();
+  diag_.error(n.IsDefined() ? n.Mark() : node_.Mark(), key_path(key), std::move(message));
+}
+
+std::optional<double> MapReader::number(std::string_view key, Need need, const NumberRule& rule) {
+  const YAML::Node n = get(key, need, rule.unit.empty() ? "" : "a number in " + rule.unit);
+  if (!n.IsDefined()) return std::nullopt;
+  return read_number(diag_, n, key_path(key), rule);
+}
+
+std::optional<int> MapReader::integer(std::string_view key, Need need, int min, int max) {
+  const YAML::Node n = get(key, need, "a whole number");
+  if (!n.IsDefined()) return std::nullopt;
+  return read_integer(diag_, n, key_path(key), min, max);
+}
+
+std::optional<std::string> MapReader::text(std::string_view key, Need need) {
+  const YAML::Node n = get(key, need);
+  if (!n.IsDefined()) return std::nullopt;
+  if (!n.IsScalar()) {
+    diag_.error(n.Mark(), key_path(key), fmt::format("expected text, got {}", describe(n)));
+    return std::nullopt;
+  }
+  return n.Scalar();
+}
+
+std::optional<std::string> MapReader::choice(std::string_view key, Need need,
+                                             const std::vector<std::string>& options) {
+  const YAML::Node n = get(key, need, fmt::format("one of: {}", fmt::join(options, ", ")));
+  if (!n.IsDefined()) return std::nullopt;
+  if (!n.IsScalar()) {
+    diag_.error(n.Mark(), key_path(key),
+                fmt::format("expected one of: {}; got {}", fmt::join(options, ", "), describe(n)));
+    return std::nullopt;
+  }
+  const std::string& v = n.Scalar();
+  if (std::find(options.begin(), options.end(), v) != options.end()) return v;
+  diag_.error(n.Mark(), key_path(key), fmt::format("unknown value '{}'; {}", v, suggestion(v, options)));
+  return std::nullopt;
+}
+
+std::optional<Vec3> MapReader::vec3(std::string_view key, Need need, std::string_view unit) {
+  const YAML::Node n = get(key, need, "[x, y, z]");
+  if (!n.IsDefined()) return std::nullopt;
+  return read_vec3(diag_, n, key_path(key), unit);
+}
+
+std::optional<std::vector<std::vector<double>>> MapReader::table(std::string_view key, Need need,
+                                                                 int columns) {
+  const YAML::Node n = get(key, need, fmt::format("a list of rows of {} numbers", columns));
+  if (!n.IsDefined()) return std::nullopt;
+  if (!n.IsSequence() || n.size() < 2) {
+    diag_.error(n.Mark(), key_path(key),
+                fmt::format("expected a list of at least two rows of {} numbers, got {}", columns,
+                            n.IsSequence() ? fmt::format("{} rows", n.size()) : describe(n)));
+    return std::nullopt;
+  }
+  std::vector<std::vector<double>> rows;
+  bool ok = true;
+  for (std::size_t r = 0; r < n.size(); ++r) {
+    const YAML::Node row = n[r];
+    const std::string rk = fmt::format("{}[{}]", key_path(key), r);
+    if (!row.IsSequence() || static_cast<int>(row.size()) != columns) {
+      diag_.error(row.Mark(), rk, fmt::format("expected a row of {} numbers, got {}", columns,
+                                              row.IsSequence() ? fmt::format("{} entries", row.size())
+                                                               : describe(row)));
+      ok = false;
+      continue;
+    }
+    std::vector<double> values;
+    for (int c = 0; c < columns; ++c) {
+      const auto x = read_number(diag_, row[c], fmt::format("{}[{}]", rk, c), NumberRule::any(""));
+      if (!x) ok = false;
+      values.push_back(x.value_or(0.0));
+    }
+    if (ok && !rows.empty() && !(values[0] > rows.back()[0])) {
+      diag_.error(row.Mark(), rk,
+                  fmt::format("times must increase strictly: {} follows {}", values[0], rows.back()[0]));
+      ok = false;
+    }
+    rows.push_back(std::move(values));
+  }
+  return ok ? std::optional(rows) : std::nullopt;
+}
+
+void MapReader::finish() {
+  if (!valid_) return;
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.Scalar();
+    if (std::find(known_.begin(), known_.end(), k) == known_.end()) {
+      std::vector<std::string> options = known_;
+      std::sort(options.begin(), options.end());
+      options.erase(std::unique(options.begin(), options.end()), options.end());
+      diag_.error(kv.first.Mark(), key_path(k), fmt::format("unknown key; {}", suggestion(k, options)));
+    }
+  }
+}
+
+}  // namespace seaflex::io

@@ -50,6 +50,9 @@ class Body {
   /// Name of a local coordinate for messages, e.g. "n3.r'.z".
   virtual std::string coordinate_name(Index local) const = 0;
 
+  /// One line for `seaflex check`: size, mass, models.
+  virtual std::string summary() const = 0;
+
   /// Appends this body's output channels.
   virtual void add_channels(ChannelList& channels) const = 0;
 

@@ -54,16 +54,25 @@ class NewtonStatics {
 
   // Newton iterations at a fixed load factor; true on convergence
   bool solve(State& state, double load_factor, int& iterations, Residual& res) {
+    failure_.clear();
     const double c_tol = 1e-10 * std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
     res = residual(state, load_factor);
     for (int it = 0; it < s_.max_iterations; ++it) {
       if (!res.finite) return false;
       if (res.force <= s_.tolerance && res.constraint <= c_tol && it > 0) return true;
-      if (!solver_.factorize(eval_.kkt.matrix())) return false;
+      if (!solver_.factorize(eval_.kkt.matrix())) {
+        failure_ = fmt::format("the tangent matrix is singular ({}): a mechanism, a body without "
+                               "supports, or coordinates without stiffness",
+                               solver_.message());
+        return false;
+      }
       rhs_.head(n_) = r_;
       rhs_.tail(m_) = -eval_.C;
       solver_.solve(rhs_, dx_);
-      if (!dx_.allFinite()) return false;
+      if (!dx_.allFinite()) {
+        failure_ = "the Newton update is not finite: the tangent matrix is nearly singular";
+        return false;
+      }
       ++iterations;
       // backtracking line search on the merit function
       const State start = state;
@@ -90,6 +99,7 @@ class NewtonStatics {
   KktSolver solver_;
   Index n_, m_;
   VecX r_, rhs_, dx_;
+  std::string failure_;  // why the last solve failed, when it was not plain non-convergence
 };
 
 }  // namespace
@@ -125,9 +135,10 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
           fmt::format("statics did not converge at load factor {:.6g} (last converged {:.6g}): "
                       "relative residual {:.3e} after {} iterations, largest at {}; {}",
                       target, factor, res.force, iterations, dae.coordinate_name(res.worst),
-                      res.finite ? "the structure may be unstable or a mechanism "
-                                   "(check supports), or the load too large for one increment"
-                                 : "NaN or Inf in the residual"),
+                      !newton.failure_.empty() ? newton.failure_
+                      : res.finite ? "the structure may be unstable or a mechanism (check "
+                                     "supports), or the load too large for one increment"
+                                   : "NaN or Inf in the residual"),
           settings.time);
     }
   }

@@ -1,0 +1,62 @@
+// Internal to the model loader: what section loaders share, and the registries that let a
+// new body kind, load kind or integrator be added as one function in one file plus one
+// line in its registry.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "seaflex/elements/ancf_beam.hpp"
+#include "seaflex/io/model_loader.hpp"
+#include "seaflex/io/yaml_reader.hpp"
+
+namespace seaflex::io {
+
+struct LoadContext {
+  Diagnostics& diag;
+  System& system;
+  Model& model;
+  /// bodies that were named but could not be built: references to them are not
+  /// reported again
+  std::vector<std::string> failed_bodies;
+
+  /// Reads the body name at key and returns the body when it exists and is an ANCF beam;
+  /// reports a dangling reference (with a suggestion) or a wrong kind otherwise.
+  const AncfBeam* beam_ref(MapReader& reader, std::string_view key);
+  /// Reads a node reference at key: a whole number, "start" or "end".
+  std::optional<int> node_ref(MapReader& reader, std::string_view key, const AncfBeam& beam,
+                              Need need);
+};
+
+using BodyBuilder =
+    std::function<std::unique_ptr<Body>(MapReader& reader, const std::string& name, LoadContext&)>;
+using ForceBuilder =
+    std::function<std::unique_ptr<Force>(MapReader& reader, const std::string& name, LoadContext&)>;
+using IntegratorBuilder = std::function<std::function<std::unique_ptr<Integrator>()>(
+    MapReader& reader, LoadContext&)>;
+
+/// body "type" -> builder (load_bodies.cpp)
+const std::map<std::string, BodyBuilder>& body_builders();
+/// load "type" -> builder (load_loads.cpp)
+const std::map<std::string, ForceBuilder>& load_builders();
+/// dynamics "integrator" -> builder (load_analysis.cpp)
+const std::map<std::string, IntegratorBuilder>& integrator_builders();
+
+void load_bodies(const YAML::Node& node, LoadContext& ctx);
+void load_supports(const YAML::Node& node, LoadContext& ctx);
+void load_loads(const YAML::Node& node, LoadContext& ctx);
+void load_statics(const YAML::Node& node, LoadContext& ctx);
+void load_dynamics(const YAML::Node& node, LoadContext& ctx);
+
+/// keys of a registry, for messages
+template <class Map>
+std::vector<std::string> keys_of(const Map& map) {
+  std::vector<std::string> keys;
+  for (const auto& kv : map) keys.push_back(kv.first);
+  return keys;
+}
+
+}  // namespace seaflex::io

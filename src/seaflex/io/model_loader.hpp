@@ -1,0 +1,41 @@
+// Reads a YAML model file (format: docs/model-format.md) into a finalized System plus
+// the analysis settings. Every problem in the file is reported at once, as an
+// InputError naming file, line, column and key.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "seaflex/integrators/integrator.hpp"
+#include "seaflex/solvers/statics.hpp"
+#include "seaflex/system/system.hpp"
+
+namespace seaflex::io {
+
+struct DynamicsSettings {
+  std::string integrator;
+  double time_step = 0.0;        ///< s
+  double duration = 0.0;         ///< s
+  double output_interval = 0.0;  ///< s, a whole number of steps
+  bool start_from_statics = false;
+  std::function<std::unique_ptr<Integrator>()> make_integrator;
+  int line = 0;  ///< line of the dynamics section, for messages
+};
+
+struct Model {
+  std::string file;
+  std::string title;
+  std::unique_ptr<System> system;
+  Vec3 gravity = Vec3::Zero();
+  StaticsSettings statics;
+  std::optional<DynamicsSettings> dynamics;
+};
+
+/// Loads and validates a model file. Throws InputError listing every problem.
+Model load_model_file(const std::string& path);
+/// Same from text; name stands for the file in messages.
+Model load_model_text(const std::string& text, const std::string& name);
+
+}  // namespace seaflex::io
