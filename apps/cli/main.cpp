@@ -1,7 +1,7 @@
 // seaflex command line: check, statics, run, modes. Exit codes: 0 success, 2 input or
 // usage error, 3 solver failure (results up to the failure stay on disk).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -36,8 +36,9 @@ class ProgressLine {
     last_ = now;
     const double frac = duration > 0 ? t / duration : 1.0;
     const double eta = frac > 0 ? elapsed * (1.0 - frac) / frac : 0.0;
-    std::fprintf(stderr, "\r[seaflex] t = %.4g / %.4g s  %3.0f%%  elapsed %.1f s  remaining %.1f s  ",
-                 t, duration, 100.0 * frac, elapsed, eta);
+    std::fprintf(stderr,
+                 "\r[seaflex] t = %.4g / %.4g s  %3.0f%%  elapsed %.1f s  remaining %.1f s  ", t,
+                 duration, 100.0 * frac, elapsed, eta);
     shown_ = true;
   }
   void done() {
@@ -58,8 +59,9 @@ void make_output_dir(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw InputError({Diagnostic{dir.string(), 0, 0, "", "cannot create the output directory: " +
-                                                             (ec ? ec.message() : "not a directory")}});
+    throw InputError({Diagnostic{
+        dir.string(), 0, 0, "",
+        "cannot create the output directory: " + (ec ? ec.message() : "not a directory")}});
 }
 
 void write_single_row(const fs::path& path, const System& system, const State& state) {
@@ -79,26 +81,33 @@ void print_summary(const io::Model& model) {
   const System& sys = *model.system;
   fmt::print("model: {}{}\n", model.file, model.title.empty() ? "" : " (" + model.title + ")");
   fmt::print("bodies: {}\n", sys.bodies().size());
-  for (const auto& b : sys.bodies()) fmt::print("  {} [{}]: {}\n", b->name(), b->kind(), b->summary());
+  for (const auto& b : sys.bodies())
+    fmt::print("  {} [{}]: {}\n", b->name(), b->kind(), b->summary());
   fmt::print("constraints: {} ({} rows)\n", sys.constraints().size(), sys.num_constraints());
   for (const auto& c : sys.constraints()) {
     std::string rows;
-    for (Index r = 0; r < c->num_rows(); ++r) rows += (r ? ", " : "") + c->row_name(r).substr(c->name().size() + 2);
+    for (Index r = 0; r < c->num_rows(); ++r)
+      rows += (r ? ", " : "") + c->row_name(r).substr(c->name().size() + 2);
     fmt::print("  {}: {}\n", c->name(), rows);
   }
   fmt::print("forces: {}\n", sys.forces().size());
   for (const auto& f : sys.forces()) fmt::print("  {}\n", f->name());
-  fmt::print("gravity: ({:g}, {:g}, {:g}) m/s^2\n", model.gravity.x(), model.gravity.y(), model.gravity.z());
+  fmt::print("gravity: ({:g}, {:g}, {:g}) m/s^2\n", model.gravity.x(), model.gravity.y(),
+             model.gravity.z());
   fmt::print("coordinates: {}, constraint rows: {}, output channels: {}\n", sys.num_coordinates(),
              sys.num_constraints(), sys.channels().size());
-  fmt::print("statics: {} load step(s), tolerance {:g}, max {} iterations per step, loads at t = {:g} s\n",
-             model.statics.load_steps, model.statics.tolerance, model.statics.max_iterations,
-             model.statics.time);
+  fmt::print(
+      "statics: {} load step(s), tolerance {:g}, max {} iterations per step, loads at t = {:g} s\n",
+      model.statics.load_steps, model.statics.tolerance, model.statics.max_iterations,
+      model.statics.time);
   if (model.dynamics) {
     const auto& d = *model.dynamics;
-    fmt::print("dynamics: {}, time step {:g} s, duration {:g} s ({} steps), output every {:g} s, start from {}\n",
-               d.integrator, d.time_step, d.duration, std::lround(d.duration / d.time_step),
-               d.output_interval, d.start_from_statics ? "static equilibrium" : "the model's initial state");
+    fmt::print(
+        "dynamics: {}, time step {:g} s, duration {:g} s ({} steps), output every {:g} s, start "
+        "from {}\n",
+        d.integrator, d.time_step, d.duration, std::lround(d.duration / d.time_step),
+        d.output_interval,
+        d.start_from_statics ? "static equilibrium" : "the model's initial state");
   } else {
     fmt::print("dynamics: none (add a dynamics section to use 'seaflex run')\n");
   }
@@ -112,12 +121,15 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
     const StaticsReport rep = solve_statics(
         *model.system, state, model.statics, [&](double factor, int iterations, double residual) {
           if (!quiet && model.statics.load_steps > 1)
-            std::fprintf(stderr, "[seaflex] statics: load factor %.4g converged in %d iterations, residual %.2e\n",
-                         factor, iterations, residual);
+            std::fprintf(
+                stderr,
+                "[seaflex] statics: load factor %.4g converged in %d iterations, residual %.2e\n",
+                factor, iterations, residual);
         });
-    fmt::print("statics converged: {} load increment(s), {} Newton iterations, relative residual {:.2e}, "
-               "constraint violation {:.2e}\n",
-               rep.increments, rep.iterations, rep.residual, rep.constraint_violation);
+    fmt::print(
+        "statics converged: {} load increment(s), {} Newton iterations, relative residual {:.2e}, "
+        "constraint violation {:.2e}\n",
+        rep.increments, rep.iterations, rep.residual, rep.constraint_violation);
   } catch (const SolverError&) {
     write_single_row(dir / "statics_partial.csv", *model.system, state);
     std::fprintf(stderr, "seaflex: the last converged statics increment is in %s\n",
@@ -151,7 +163,8 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
                                  "see docs/model-format.md"}});
   make_output_dir(dir);
   const auto& d = *model.dynamics;
-  State state = d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
+  State state =
+      d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
   auto integrator = d.make_integrator();
   Simulation sim(*model.system, model.system->channels(), *integrator,
                  SimulationSettings{d.duration, d.time_step, d.output_interval});
@@ -162,22 +175,26 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
   try {
     const SimulationReport rep = sim.run(state);
     progress.done();
-    fmt::print("dynamics: {} steps of {:g} s to t = {:g} s in {:.2f} s wall time; {} rows; max constraint "
-               "violation {:.2e}\nwrote {}\n",
-               rep.steps, d.time_step, rep.end_time, progress.elapsed(), rep.rows,
-               rep.max_constraint_violation, (dir / "timeseries.csv").string());
+    fmt::print(
+        "dynamics: {} steps of {:g} s to t = {:g} s in {:.2f} s wall time; {} rows; max constraint "
+        "violation {:.2e}\nwrote {}\n",
+        rep.steps, d.time_step, rep.end_time, progress.elapsed(), rep.rows,
+        rep.max_constraint_violation, (dir / "timeseries.csv").string());
   } catch (const SolverError&) {
     progress.done();
-    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", (dir / "timeseries.csv").c_str());
+    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n",
+                 (dir / "timeseries.csv").c_str());
     throw;
   }
   return 0;
 }
 
-int cmd_modes(const std::string& file, const fs::path& dir, int count, bool about_initial, bool quiet) {
+int cmd_modes(const std::string& file, const fs::path& dir, int count, bool about_initial,
+              bool quiet) {
   const io::Model model = io::load_model_file(file);
   make_output_dir(dir);
-  const State state = about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
+  const State state =
+      about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
   const ModalResult modes = solve_modes(*model.system, state, count);
   std::FILE* out = std::fopen((dir / "modes.csv").c_str(), "w");
   if (!out) throw InputError({Diagnostic{(dir / "modes.csv").string(), 0, 0, "", "cannot write"}});
@@ -215,11 +232,15 @@ int main(int argc, char** argv) {
   run->add_option("MODEL", file, "model file (YAML)")->required();
   run->add_option("-o,--output", dir, "output directory")->capture_default_str();
   run->add_flag("-q,--quiet", quiet, "no progress line");
-  auto* modes = app.add_subcommand("modes", "natural frequencies about static equilibrium; writes DIR/modes.csv");
+  auto* modes = app.add_subcommand(
+      "modes", "natural frequencies about static equilibrium; writes DIR/modes.csv");
   modes->add_option("MODEL", file, "model file (YAML)")->required();
   modes->add_option("-o,--output", dir, "output directory")->capture_default_str();
-  modes->add_option("-n,--count", count, "number of modes")->check(CLI::PositiveNumber)->capture_default_str();
-  modes->add_flag("--about-initial", about_initial, "linearize about the initial state instead of statics");
+  modes->add_option("-n,--count", count, "number of modes")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  modes->add_flag("--about-initial", about_initial,
+                  "linearize about the initial state instead of statics");
   modes->add_flag("-q,--quiet", quiet, "no progress messages");
 
   try {

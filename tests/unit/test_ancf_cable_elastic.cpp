@@ -16,8 +16,8 @@ using namespace seaflex::ancf_cable;
 
 namespace {
 
-constexpr double kL = 1.3;     // element length (m)
-constexpr double kEA = 2.1e9;  // N, steel 0.01 m^2
+constexpr double kL = 1.3;      // element length (m)
+constexpr double kEA = 2.1e9;   // N, steel 0.01 m^2
 constexpr double kEI = 1.75e6;  // N m^2
 
 // a deformed element: straight along a skew direction, stretched 1 %, bent and twisted

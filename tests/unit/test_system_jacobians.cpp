@@ -20,18 +20,19 @@ std::unique_ptr<System> make_system(ancf_cable::AxialModel axial,
   BeamOptions opt;
   opt.axial = axial;
   opt.bending = bending;
-  auto& beam = static_cast<AncfBeam&>(sys->add_body(std::make_unique<AncfBeam>(
-      "beam", BeamGeometry::straight(Vec3(0, 0, 0), Vec3(4, 1, -1), 4),
-      BeamSection::pipe(0.3, 0.25, 2.1e11, 7850), opt)));
+  auto& beam = static_cast<AncfBeam&>(sys->add_body(
+      std::make_unique<AncfBeam>("beam", BeamGeometry::straight(Vec3(0, 0, 0), Vec3(4, 1, -1), 4),
+                                 BeamSection::pipe(0.3, 0.25, 2.1e11, 7850), opt)));
   sys->add_force(std::make_unique<Gravity>(Vec3(0, 0, -9.81), std::vector<const Body*>{&beam}));
-  sys->add_force(std::make_unique<PointLoad>("tip", std::make_unique<BeamPointAttachment>(beam, 2.7),
-                                             VectorSignal(Vec3(100, 2e3, -5e3), TimeSignal::constant(1))));
-  sys->add_force(std::make_unique<DistributedLoad>("wind", beam, 1, 2,
-                                                   VectorSignal(Vec3(0, 50, 0), TimeSignal::constant(1))));
-  sys->add_constraint(std::make_unique<CoordinateLock>(
-      "support", beam, std::vector<Index>{0, 1, 2, 3, 4, 5},
-      std::vector<double>{0, 0, 0, 0.9, 0.2, -0.2},
-      std::vector<std::string>{"x", "y", "z", "dx", "dy", "dz"}));
+  sys->add_force(
+      std::make_unique<PointLoad>("tip", std::make_unique<BeamPointAttachment>(beam, 2.7),
+                                  VectorSignal(Vec3(100, 2e3, -5e3), TimeSignal::constant(1))));
+  sys->add_force(std::make_unique<DistributedLoad>(
+      "wind", beam, 1, 2, VectorSignal(Vec3(0, 50, 0), TimeSignal::constant(1))));
+  sys->add_constraint(
+      std::make_unique<CoordinateLock>("support", beam, std::vector<Index>{0, 1, 2, 3, 4, 5},
+                                       std::vector<double>{0, 0, 0, 0.9, 0.2, -0.2},
+                                       std::vector<std::string>{"x", "y", "z", "dx", "dy", "dz"}));
   sys->finalize();
   return sys;
 }

@@ -37,14 +37,16 @@ bodies:
 supports:
   - {{body: beam, node: start, type: clamped}}
 )",
-                     fmt::arg("g", kG), fmt::arg("L", kL), fmt::arg("n", elements), fmt::arg("A", kA),
-                     fmt::arg("I", kI), fmt::arg("E", kE), fmt::arg("rho", density),
-                     fmt::arg("axial", axial), fmt::arg("bending", bending));
+                     fmt::arg("g", kG), fmt::arg("L", kL), fmt::arg("n", elements),
+                     fmt::arg("A", kA), fmt::arg("I", kI), fmt::arg("E", kE),
+                     fmt::arg("rho", density), fmt::arg("axial", axial),
+                     fmt::arg("bending", bending));
 }
 
 // static tip deflection (positive down) of the cantilever model
 double tip_deflection(int elements, const char* axial, const char* bending, double density = 7850) {
-  io::Model model = io::load_model_text(cantilever_yaml(elements, axial, bending, density), "cantilever");
+  io::Model model =
+      io::load_model_text(cantilever_yaml(elements, axial, bending, density), "cantilever");
   State s = model.system->initial_state();
   solve_statics(*model.system, s, model.statics);
   const Body& beam = *model.system->find_body("beam");
@@ -54,7 +56,7 @@ double tip_deflection(int elements, const char* axial, const char* bending, doub
 // every accepted combination (L1 with the exact bending model is rejected by the loader:
 // neither restrains the length of the nodal slopes)
 const std::pair<const char*, const char*> kModels[] = {
-    {"exact", "exact"}, {"L1", "T1"},    {"L2", "T1"}, {"L2", "T2"},
+    {"exact", "exact"}, {"L1", "T1"},    {"L2", "T1"},    {"L2", "T2"},
     {"L1", "T2"},       {"exact", "T1"}, {"exact", "T2"}, {"L2", "exact"}};
 
 }  // namespace
@@ -91,7 +93,8 @@ TEST(CantileverStatics, EveryModelWithinHalfPercentOfLinearTheory) {
 TEST(CantileverStatics, EveryModelConvergesToElastica) {
   const auto el = analytic::elastica_cantilever(7850 * kA * kG, kL, kE * kI);
   for (const auto& [axial, bending] : kModels)
-    EXPECT_NEAR(tip_deflection(10, axial, bending) / el.deflection, 1.0, 5e-4) << axial << "/" << bending;
+    EXPECT_NEAR(tip_deflection(10, axial, bending) / el.deflection, 1.0, 5e-4)
+        << axial << "/" << bending;
 }
 
 // Green-Lagrange axial strain (exact, L2) locks on coarse meshes (membrane locking: the

@@ -20,7 +20,8 @@ namespace {
 
 constexpr double kL = 10.0, kE = 210e9, kA = 0.01, kI = 8.33e-6, kRho = 7850;
 
-std::string yaml(int elements, const char* axial, const char* bending, const std::string& extra = "") {
+std::string yaml(int elements, const char* axial, const char* bending,
+                 const std::string& extra = "") {
   return fmt::format(R"(
 environment: {{gravity: 0}}
 bodies:
@@ -50,15 +51,15 @@ std::vector<double> bending_omegas(const io::Model& model) {
 
 TEST(CantileverVibration, FirstThreeBendingFrequencies) {
   std::printf("\n  bending frequencies (Hz), 10 elements\n");
-  for (const auto& [axial, bending] : {std::pair{"exact", "exact"}, std::pair{"L1", "T1"},
-                                       std::pair{"L2", "T2"}}) {
+  for (const auto& [axial, bending] :
+       {std::pair{"exact", "exact"}, std::pair{"L1", "T1"}, std::pair{"L2", "T2"}}) {
     const io::Model model = io::load_model_text(yaml(10, axial, bending), "cantilever");
     const auto omega = bending_omegas(model);
     ASSERT_GE(omega.size(), 3u);
     for (int n = 0; n < 3; ++n) {
       const double ref = analytic::cantilever_omega(n, kE * kI, kRho * kA, kL);
-      std::printf("  %-5s/%-5s mode %d: %.5f Hz, Euler-Bernoulli %.5f Hz (%+.3f%%)\n", axial, bending,
-                  n + 1, omega[n] / (2 * std::numbers::pi), ref / (2 * std::numbers::pi),
+      std::printf("  %-5s/%-5s mode %d: %.5f Hz, Euler-Bernoulli %.5f Hz (%+.3f%%)\n", axial,
+                  bending, n + 1, omega[n] / (2 * std::numbers::pi), ref / (2 * std::numbers::pi),
                   100 * (omega[n] / ref - 1));
       EXPECT_NEAR(omega[n] / ref, 1.0, 0.01) << axial << "/" << bending << " mode " << n + 1;
     }

@@ -36,9 +36,10 @@ TEST(FlexiblePendulum, ConservesEnergyAndConstraint) {
     max_strain = std::max(max_strain, e.strain);
     min_z = std::min(min_z, s.q[tip]);
   }
-  std::printf("\n  flexible pendulum: max |E - E0| = %.4g J = %.4f %% of m g L/2 = %.4g J; "
-              "max strain energy %.4g J; lowest tip z %.4f m; pin drift %.2e m\n",
-              worst, 100 * worst / scale, scale, max_strain, min_z, drift);
+  std::printf(
+      "\n  flexible pendulum: max |E - E0| = %.4g J = %.4f %% of m g L/2 = %.4g J; "
+      "max strain energy %.4g J; lowest tip z %.4f m; pin drift %.2e m\n",
+      worst, 100 * worst / scale, scale, max_strain, min_z, drift);
   EXPECT_LT(worst / scale, 5e-3);
   EXPECT_LT(drift, 1e-8);
   // the motion is large: the tip swings down past -1 m, and the beam deforms

@@ -39,6 +39,8 @@ void CoordinateLock::add_multiplier_hessian(const State&, const Eigen::Ref<const
   // linear constraint: C_q is constant, d(C_q^T mu)/dq = 0
 }
 
-std::string CoordinateLock::row_name(Index row) const { return name() + ": " + labels_[row]; }
+std::string CoordinateLock::row_name(Index row) const {
+  return name() + ": " + labels_[row];
+}
 
 }  // namespace seaflex

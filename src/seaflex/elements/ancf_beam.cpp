@@ -181,8 +181,8 @@ std::string AncfBeam::summary() const {
 
 std::pair<int, double> AncfBeam::locate(double s) const {
   if (s < 0.0 || s > total_length_ * (1.0 + 1e-12))
-    throw std::out_of_range(fmt::format("arc length {} m outside beam {} of length {} m", s,
-                                        name(), total_length_));
+    throw std::out_of_range(
+        fmt::format("arc length {} m outside beam {} of length {} m", s, name(), total_length_));
   for (int el = 0; el < num_elements(); ++el)
     if (s <= node_arc_[el + 1] || el == num_elements() - 1)
       return {el, std::clamp((s - node_arc_[el]) / element_lengths_[el], 0.0, 1.0)};
@@ -198,8 +198,8 @@ BeamPointAttachment::BeamPointAttachment(const AncfBeam& beam, double s) : beam_
 
 std::unique_ptr<BeamPointAttachment> BeamPointAttachment::at_node(const AncfBeam& beam, int k) {
   if (k < 0 || k >= beam.num_nodes())
-    throw std::out_of_range(fmt::format("node {} outside beam {} (nodes 0..{})", k, beam.name(),
-                                        beam.num_nodes() - 1));
+    throw std::out_of_range(
+        fmt::format("node {} outside beam {} (nodes 0..{})", k, beam.name(), beam.num_nodes() - 1));
   return std::make_unique<BeamPointAttachment>(beam, beam.node_arc_length(k));
 }
 

@@ -9,18 +9,24 @@ namespace seaflex::ancf_cable {
 
 std::string_view to_string(AxialModel m) {
   switch (m) {
-    case AxialModel::kExact: return "exact";
-    case AxialModel::kL1: return "L1";
-    case AxialModel::kL2: return "L2";
+    case AxialModel::kExact:
+      return "exact";
+    case AxialModel::kL1:
+      return "L1";
+    case AxialModel::kL2:
+      return "L2";
   }
   return "?";
 }
 
 std::string_view to_string(BendingModel m) {
   switch (m) {
-    case BendingModel::kExact: return "exact";
-    case BendingModel::kT1: return "T1";
-    case BendingModel::kT2: return "T2";
+    case BendingModel::kExact:
+      return "exact";
+    case BendingModel::kT1:
+      return "T1";
+    case BendingModel::kT2:
+      return "T2";
   }
   return "?";
 }
@@ -29,9 +35,9 @@ Mat4 axial_matrix(double l) {
   // the 4x4 core of thesis eq. (27): [6/5, l/10, -6/5, l/10; ...] / l
   const double l2 = l * l;
   Mat4 B;
-  B << 6.0 / 5.0, l / 10.0, -6.0 / 5.0, l / 10.0,  //
+  B << 6.0 / 5.0, l / 10.0, -6.0 / 5.0, l / 10.0,        //
       l / 10.0, 2.0 * l2 / 15.0, -l / 10.0, -l2 / 30.0,  //
-      -6.0 / 5.0, -l / 10.0, 6.0 / 5.0, -l / 10.0,  //
+      -6.0 / 5.0, -l / 10.0, 6.0 / 5.0, -l / 10.0,       //
       l / 10.0, -l2 / 30.0, -l / 10.0, 2.0 * l2 / 15.0;
   return B / l;
 }
@@ -40,16 +46,18 @@ Mat4 bending_matrix(double l) {
   // thesis eq. (42) without EI
   const double l2 = l * l, l3 = l2 * l;
   Mat4 B;
-  B << 12.0, 6.0 * l, -12.0, 6.0 * l,  //
+  B << 12.0, 6.0 * l, -12.0, 6.0 * l,         //
       6.0 * l, 4.0 * l2, -6.0 * l, 2.0 * l2,  //
-      -12.0, -6.0 * l, 12.0, -6.0 * l,  //
+      -12.0, -6.0 * l, 12.0, -6.0 * l,        //
       6.0 * l, 2.0 * l2, -6.0 * l, 4.0 * l2;
   return B / l3;
 }
 
 namespace {
 
-Mat3 outer(const Vec3& a, const Vec3& b) { return a * b.transpose(); }
+Mat3 outer(const Vec3& a, const Vec3& b) {
+  return a * b.transpose();
+}
 
 // adds the 3x4 force matrix F (column i acts on node vector i) into the 12-vector Q
 void add_to(Vec12& Q, const Mat34& F, double scale) {
@@ -76,8 +84,8 @@ CableElasticity::CableElasticity(double l, double EA, double EI, AxialModel axia
   const math::QuadratureRule exact = math::gauss_legendre_unit(5);
   for (std::size_t q = 0; q < exact.points.size(); ++q) {
     const Vec4 d = shape_dx(exact.points[q], l);
-    const Eigen::Matrix<double, 16, 1> dd = Eigen::Map<const Eigen::Matrix<double, 16, 1>>(
-        Mat4(d * d.transpose()).data());
+    const Eigen::Matrix<double, 16, 1> dd =
+        Eigen::Map<const Eigen::Matrix<double, 16, 1>>(Mat4(d * d.transpose()).data());
     D_ += (exact.weights[q] * l) * dd * dd.transpose();
   }
 }
@@ -85,14 +93,26 @@ CableElasticity::CableElasticity(double l, double EA, double EI, AxialModel axia
 double CableElasticity::add_forces(const Vec12& e, Vec12& Q, Mat12* K) const {
   double U = 0.0;
   switch (axial_) {
-    case AxialModel::kExact: U += add_axial_exact(e, Q, K); break;
-    case AxialModel::kL1: U += add_axial_l1(e, Q, K); break;
-    case AxialModel::kL2: U += add_axial_l2(e, Q, K); break;
+    case AxialModel::kExact:
+      U += add_axial_exact(e, Q, K);
+      break;
+    case AxialModel::kL1:
+      U += add_axial_l1(e, Q, K);
+      break;
+    case AxialModel::kL2:
+      U += add_axial_l2(e, Q, K);
+      break;
   }
   switch (bending_) {
-    case BendingModel::kExact: U += add_bending_exact(e, Q, K); break;
-    case BendingModel::kT1: U += add_bending_t1(e, Q, K); break;
-    case BendingModel::kT2: U += add_bending_t2(e, Q, K); break;
+    case BendingModel::kExact:
+      U += add_bending_exact(e, Q, K);
+      break;
+    case BendingModel::kT1:
+      U += add_bending_t1(e, Q, K);
+      break;
+    case BendingModel::kT2:
+      U += add_bending_t2(e, Q, K);
+      break;
   }
   return U;
 }
@@ -102,7 +122,7 @@ double CableElasticity::add_axial_exact(const Vec12& e, Vec12& Q, Mat12* K) cons
   double U = 0.0;
   for (std::size_t k = 0; k < w_.size(); ++k) {
     const Vec4& ds = ds_[k];
-    const Vec3 a = R * ds;                   // r'
+    const Vec3 a = R * ds;                      // r'
     const double eps = 0.5 * (a.dot(a) - 1.0);  // thesis eq. (12)
     const double w = w_[k] * EA_;
     U += 0.5 * w * eps * eps;  // thesis eq. (11)
@@ -121,7 +141,7 @@ double CableElasticity::add_axial_exact(const Vec12& e, Vec12& Q, Mat12* K) cons
 double CableElasticity::add_axial_l1(const Vec12& e, Vec12& Q, Mat12* K) const {
   const Mat34 R = relative_nodes(e);
   const Vec3 chord = R.col(2) - R.col(0);
-  const double d = chord.norm();  // thesis eq. (25)
+  const double d = chord.norm();     // thesis eq. (25)
   const double eps = (d - l_) / l_;  // thesis eq. (24)
   // Q = -K_l e with K_l = EA eps int S'^T S' dx   (thesis eq. 23, 27)
   const Mat34 RB = R * B1_;
@@ -144,7 +164,8 @@ double CableElasticity::add_axial_l2(const Vec12& e, Vec12& Q, Mat12* K) const {
   // the closed form of thesis eq. (32-35).
   const Mat34 R = relative_nodes(e);
   const Mat4 G = R.transpose() * R;
-  const Eigen::Map<const Eigen::Matrix<double, 16, 1>> g(G.data());  // G symmetric: order irrelevant
+  const Eigen::Map<const Eigen::Matrix<double, 16, 1>> g(
+      G.data());  // G symmetric: order irrelevant
   const Eigen::Matrix<double, 16, 1> DG = D_.transpose() * g;
   const Mat4 P = 0.5 * Eigen::Map<const Mat4>(DG.data()) - 0.5 * B1_;
   add_to(Q, R * P, -EA_);
@@ -171,8 +192,8 @@ double CableElasticity::add_bending_exact(const Vec12& e, Vec12& Q, Mat12* K) co
   for (std::size_t k = 0; k < w_.size(); ++k) {
     const Vec4& ds = ds_[k];
     const Vec4& dds = dds_[k];
-    const Vec3 a = R * ds;    // r'
-    const Vec3 b = R * dds;   // r''
+    const Vec3 a = R * ds;   // r'
+    const Vec3 b = R * dds;  // r''
     const double g = a.dot(a), h = b.dot(b), p = a.dot(b);
     const double N = g * h - p * p;  // |r' x r''|^2
     const double u = 1.0 / (g * g * g);

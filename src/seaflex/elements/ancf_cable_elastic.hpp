@@ -77,11 +77,11 @@ class CableElasticity {
   double l_, EA_, EI_;
   AxialModel axial_;
   BendingModel bending_;
-  std::vector<double> w_;    // quadrature weights times l (integrate over x)
-  std::vector<Vec4> ds_;     // s_i' at the quadrature points
-  std::vector<Vec4> dds_;    // s_i'' at the quadrature points
-  Mat4 B1_;                  // int s_i' s_j' dx
-  Mat4 B2_;                  // int s_i'' s_j'' dx
+  std::vector<double> w_;            // quadrature weights times l (integrate over x)
+  std::vector<Vec4> ds_;             // s_i' at the quadrature points
+  std::vector<Vec4> dds_;            // s_i'' at the quadrature points
+  Mat4 B1_;                          // int s_i' s_j' dx
+  Mat4 B2_;                          // int s_i'' s_j'' dx
   Eigen::Matrix<double, 16, 16> D_;  // D(4i+j, 4k+m) = int s_i' s_j' s_k' s_m' dx
 };
 

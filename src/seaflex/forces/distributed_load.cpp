@@ -22,6 +22,8 @@ void DistributedLoad::assemble(const State& state, double load_factor,
         ancf_cable::uniform_load(f, beam_.element_length(el));  // thesis eq. (127)
 }
 
-double DistributedLoad::potential_energy(const State&) const { return 0.0; }
+double DistributedLoad::potential_energy(const State&) const {
+  return 0.0;
+}
 
 }  // namespace seaflex

@@ -27,6 +27,8 @@ void PointLoad::assemble(const State& state, double load_factor, AssemblyTarget&
   }
 }
 
-double PointLoad::potential_energy(const State&) const { return 0.0; }
+double PointLoad::potential_energy(const State&) const {
+  return 0.0;
+}
 
 }  // namespace seaflex

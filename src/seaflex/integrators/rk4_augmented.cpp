@@ -30,9 +30,10 @@ bool Rk4Augmented::factor_at(const Dae& dae, const State& state) {
   req.scales.km = 1.0;
   dae.evaluate(state, req, eval_);
   if (!solver_.factorize(eval_.kkt.matrix())) {
-    failure_ = fmt::format("the augmented matrix [M C_q^T; C_q 0] is singular ({}): a body "
-                           "without mass or redundant constraints",
-                           solver_.message());
+    failure_ = fmt::format(
+        "the augmented matrix [M C_q^T; C_q 0] is singular ({}): a body "
+        "without mass or redundant constraints",
+        solver_.message());
     return false;
   }
   return true;

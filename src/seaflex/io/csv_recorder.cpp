@@ -11,7 +11,8 @@ namespace seaflex::io {
 CsvRecorder::CsvRecorder(const std::filesystem::path& path) : path_(path) {
   file_ = std::fopen(path.c_str(), "w");
   if (!file_)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+    throw std::runtime_error(
+        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
 }
 
 CsvRecorder::~CsvRecorder() {
@@ -36,9 +37,12 @@ void CsvRecorder::record(double t, std::span<const double> values) {
   for (double v : values) fmt::format_to(std::back_inserter(line_), ",{:.17g}", v);
   line_ += '\n';
   if (std::fputs(line_.c_str(), file_) < 0 || std::fflush(file_) != 0)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", path_.string(), std::strerror(errno)));
+    throw std::runtime_error(
+        fmt::format("cannot write {}: {}", path_.string(), std::strerror(errno)));
 }
 
-void CsvRecorder::flush() { std::fflush(file_); }
+void CsvRecorder::flush() {
+  std::fflush(file_);
+}
 
 }  // namespace seaflex::io

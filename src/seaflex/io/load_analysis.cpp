@@ -11,8 +11,8 @@ namespace seaflex::io {
 namespace {
 
 std::function<std::unique_ptr<Integrator>()> build_rk4(MapReader& r, LoadContext&) {
-  const auto stab = r.choice("constraint_stabilization", Need::kOptional,
-                             {"projection", "baumgarte", "none"});
+  const auto stab =
+      r.choice("constraint_stabilization", Need::kOptional, {"projection", "baumgarte", "none"});
   const auto alpha = r.number("baumgarte_alpha", Need::kOptional, NumberRule::positive("1/s"));
   const auto beta = r.number("baumgarte_beta", Need::kOptional, NumberRule::positive("1/s"));
   Stabilization s = Stabilization::kProjection;
@@ -74,10 +74,12 @@ void load_dynamics(const YAML::Node& node, LoadContext& ctx) {
   if (h && T) {
     if (*T / *h > 2e9) {
       r.error("duration", fmt::format("{:g} s at a time step of {:g} s is {:.3g} steps, more than "
-                                      "the limit of 2e9", *T, *h, *T / *h));
+                                      "the limit of 2e9",
+                                      *T, *h, *T / *h));
       ok = false;
     } else if (!whole_steps(*T, *h)) {
-      r.error("duration", fmt::format("must be a whole number of time steps ({:g} s), got {:g} s", *h, *T));
+      r.error("duration",
+              fmt::format("must be a whole number of time steps ({:g} s), got {:g} s", *h, *T));
       ok = false;
     }
   }

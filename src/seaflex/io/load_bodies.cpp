@@ -22,17 +22,23 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
     const YAML::Node pl = r.get("polyline");
     std::vector<Vec3> points;
     if (!pl.IsSequence() || pl.size() < 2) {
-      r.error("polyline", fmt::format("expected a list of at least two points [x, y, z] in m, got {}",
-                                      describe(pl)));
+      r.error("polyline",
+              fmt::format("expected a list of at least two points [x, y, z] in m, got {}",
+                          describe(pl)));
       ok = false;
     } else {
       for (std::size_t i = 0; i < pl.size(); ++i) {
-        const auto p = read_vec3(r.diagnostics(), pl[i], fmt::format("{}[{}]", r.key_path("polyline"), i), "m");
-        if (p) points.push_back(*p); else ok = false;
+        const auto p = read_vec3(r.diagnostics(), pl[i],
+                                 fmt::format("{}[{}]", r.key_path("polyline"), i), "m");
+        if (p)
+          points.push_back(*p);
+        else
+          ok = false;
       }
     }
     std::vector<int> counts;
-    const YAML::Node el = r.get("elements", Need::kRequired, "a whole number per segment, or one for all");
+    const YAML::Node el =
+        r.get("elements", Need::kRequired, "a whole number per segment, or one for all");
     if (el.IsDefined() && el.IsSequence()) {
       if (pl.IsSequence() && el.size() + 1 != pl.size()) {
         r.error("elements", fmt::format("expected {} counts, one per polyline segment, got {}",
@@ -40,25 +46,35 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
         ok = false;
       }
       for (std::size_t i = 0; i < el.size(); ++i) {
-        const auto c = read_integer(r.diagnostics(), el[i], fmt::format("{}[{}]", r.key_path("elements"), i), 1, kMaxElements);
-        if (c) counts.push_back(*c); else ok = false;
+        const auto c =
+            read_integer(r.diagnostics(), el[i], fmt::format("{}[{}]", r.key_path("elements"), i),
+                         1, kMaxElements);
+        if (c)
+          counts.push_back(*c);
+        else
+          ok = false;
       }
     } else if (el.IsDefined()) {
       const auto c = read_integer(r.diagnostics(), el, r.key_path("elements"), 1, kMaxElements);
-      if (c && pl.IsSequence() && pl.size() >= 2) counts.assign(pl.size() - 1, *c); else ok = false;
+      if (c && pl.IsSequence() && pl.size() >= 2)
+        counts.assign(pl.size() - 1, *c);
+      else
+        ok = false;
     } else {
       ok = false;
     }
     if (ok) {
       for (std::size_t i = 0; i + 1 < points.size(); ++i)
         if (!((points[i + 1] - points[i]).norm() > 0.0)) {
-          r.error("polyline", fmt::format("points {} and {} coincide: a segment needs a length", i, i + 1));
+          r.error("polyline",
+                  fmt::format("points {} and {} coincide: a segment needs a length", i, i + 1));
           ok = false;
         }
       long total = 0;
       for (int c : counts) total += c;
       if (total > kMaxElements) {
-        r.error("elements", fmt::format("{} elements in all exceed the limit of {} per beam", total, kMaxElements));
+        r.error("elements", fmt::format("{} elements in all exceed the limit of {} per beam", total,
+                                        kMaxElements));
         ok = false;
       }
       if (ok) geometry = BeamGeometry::polyline(points, counts);
@@ -79,25 +95,32 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
   const auto E = r.number("youngs_modulus", Need::kRequired, NumberRule::positive("Pa"));
   const auto rho = r.number("density", Need::kRequired, NumberRule::positive("kg/m^3"));
   if (E && *E < 1e4) {
-    r.error("youngs_modulus", fmt::format("{:g} Pa is implausibly low; seaflex uses Pa (steel: 2.1e11), "
-                                          "not GPa or MPa", *E));
+    r.error("youngs_modulus",
+            fmt::format("{:g} Pa is implausibly low; seaflex uses Pa (steel: 2.1e11), "
+                        "not GPa or MPa",
+                        *E));
     ok = false;
   }
   if (rho && *rho < 100.0) {
-    r.error("density", fmt::format("{:g} kg/m^3 is implausibly low; seaflex uses kg/m^3 (steel: 7850), "
-                                   "not t/m^3", *rho));
+    r.error("density",
+            fmt::format("{:g} kg/m^3 is implausibly low; seaflex uses kg/m^3 (steel: 7850), "
+                        "not t/m^3",
+                        *rho));
     ok = false;
   }
   const bool pipe = r.has("outer_diameter") || r.has("inner_diameter");
   const bool explicit_section = r.has("area") || r.has("second_moment");
   if (pipe && explicit_section) {
-    r.error("area", "give the section either as outer_diameter/inner_diameter or as area/second_moment, not both");
+    r.error("area",
+            "give the section either as outer_diameter/inner_diameter or as area/second_moment, "
+            "not both");
     ok = false;
   } else if (pipe) {
     const auto od = r.number("outer_diameter", Need::kRequired, NumberRule::positive("m"));
     const auto id = r.number("inner_diameter", Need::kOptional, NumberRule::nonnegative("m"));
     if (od && id && !(*id < *od)) {
-      r.error("inner_diameter", fmt::format("must be smaller than outer_diameter ({:g} m), got {:g} m", *od, *id));
+      r.error("inner_diameter",
+              fmt::format("must be smaller than outer_diameter ({:g} m), got {:g} m", *od, *id));
       ok = false;
     }
     if (od && E && rho && ok) section = BeamSection::pipe(*od, id.value_or(0.0), *E, *rho);
@@ -114,18 +137,21 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
 
   BeamOptions options;
   if (const auto m = r.choice("axial_model", Need::kOptional, {"exact", "L1", "L2"}))
-    options.axial = *m == "L1" ? ancf_cable::AxialModel::kL1
-                  : *m == "L2" ? ancf_cable::AxialModel::kL2 : ancf_cable::AxialModel::kExact;
+    options.axial = *m == "L1"   ? ancf_cable::AxialModel::kL1
+                    : *m == "L2" ? ancf_cable::AxialModel::kL2
+                                 : ancf_cable::AxialModel::kExact;
   if (const auto m = r.choice("bending_model", Need::kOptional, {"exact", "T1", "T2"}))
-    options.bending = *m == "T1" ? ancf_cable::BendingModel::kT1
-                    : *m == "T2" ? ancf_cable::BendingModel::kT2 : ancf_cable::BendingModel::kExact;
+    options.bending = *m == "T1"   ? ancf_cable::BendingModel::kT1
+                      : *m == "T2" ? ancf_cable::BendingModel::kT2
+                                   : ancf_cable::BendingModel::kExact;
   if (const auto g = r.integer("gauss_points", Need::kOptional, 2, 20)) options.gauss_points = *g;
   if (options.axial == ancf_cable::AxialModel::kL1 &&
       options.bending == ancf_cable::BendingModel::kExact) {
     // L1 restrains only the chord length, the exact curvature only r' x r'': the length of
     // each nodal slope r' would have no stiffness (a singular tangent)
-    r.error("axial_model", "L1 needs bending_model T1 or T2: with the exact curvature nothing "
-                           "restrains the length of the nodal slopes r'");
+    r.error("axial_model",
+            "L1 needs bending_model T1 or T2: with the exact curvature nothing "
+            "restrains the length of the nodal slopes r'");
     ok = false;
   }
 
@@ -150,7 +176,9 @@ void load_bodies(const YAML::Node& node, LoadContext& ctx) {
     const std::string name = kv.first.Scalar();
     bodies.has(name);  // every entry is a body: no unknown keys at this level
     const std::string path = "bodies." + name;
-    if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos) {
+    if (name.empty() || name.find_first_not_of(
+                            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
+                            std::string::npos) {
       ctx.diag.error(kv.first.Mark(), path,
                      "body names may use letters, digits, '_' and '-' only (they become output "
                      "channel names such as <body>.n0.x)");

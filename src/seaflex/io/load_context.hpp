@@ -35,8 +35,8 @@ using BodyBuilder =
     std::function<std::unique_ptr<Body>(MapReader& reader, const std::string& name, LoadContext&)>;
 using ForceBuilder =
     std::function<std::unique_ptr<Force>(MapReader& reader, const std::string& name, LoadContext&)>;
-using IntegratorBuilder = std::function<std::function<std::unique_ptr<Integrator>()>(
-    MapReader& reader, LoadContext&)>;
+using IntegratorBuilder =
+    std::function<std::function<std::unique_ptr<Integrator>()>(MapReader& reader, LoadContext&)>;
 
 /// body "type" -> builder (load_bodies.cpp)
 const std::map<std::string, BodyBuilder>& body_builders();

@@ -21,8 +21,9 @@ std::optional<VectorSignal> read_vector_signal(MapReader& r, const std::string& 
     return std::nullopt;
   }
   if (tabled) {
-    if (ramp || factor) r.error(ramp ? "ramp" : "factor_table",
-                                fmt::format("a ramp or factor table applies to {}, not to {}", key, table_key));
+    if (ramp || factor)
+      r.error(ramp ? "ramp" : "factor_table",
+              fmt::format("a ramp or factor table applies to {}, not to {}", key, table_key));
     const auto rows = r.table(table_key, Need::kRequired, 4);
     if (!rows) return std::nullopt;
     std::vector<double> times;
@@ -32,6 +33,12 @@ std::optional<VectorSignal> read_vector_signal(MapReader& r, const std::string& 
       values.emplace_back(row[1], row[2], row[3]);
     }
     return VectorSignal::table(std::move(times), std::move(values));
+  }
+  if (!constant) {
+    r.error(key, fmt::format("required key is missing (give {} as [x, y, z] in {}, or {} as "
+                             "[[t, x, y, z], ...])",
+                             key, unit, table_key));
+    return std::nullopt;
   }
   const auto value = r.vec3(key, Need::kRequired, unit);
   if (ramp && factor) {
@@ -74,7 +81,8 @@ std::unique_ptr<Force> build_point_force(MapReader& r, const std::string& name, 
   if (at_node && at_s) {
     r.error("arc_length", "give either node or arc_length, not both");
   } else if (beam && at_s) {
-    if (const auto s = r.number("arc_length", Need::kRequired, NumberRule::range(0.0, beam->length(), "m")))
+    if (const auto s =
+            r.number("arc_length", Need::kRequired, NumberRule::range(0.0, beam->length(), "m")))
       point = std::make_unique<BeamPointAttachment>(*beam, *s);
   } else if (beam) {
     if (const auto k = ctx.node_ref(r, "node", *beam, Need::kRequired))
@@ -96,8 +104,10 @@ std::unique_ptr<Force> build_distributed_load(MapReader& r, const std::string& n
                                       beam->num_elements() - 1, describe(el)));
       ok = false;
     } else {
-      const auto a = read_integer(r.diagnostics(), el[0], r.key_path("elements") + "[0]", 0, beam->num_elements() - 1);
-      const auto b = read_integer(r.diagnostics(), el[1], r.key_path("elements") + "[1]", 0, beam->num_elements() - 1);
+      const auto a = read_integer(r.diagnostics(), el[0], r.key_path("elements") + "[0]", 0,
+                                  beam->num_elements() - 1);
+      const auto b = read_integer(r.diagnostics(), el[1], r.key_path("elements") + "[1]", 0,
+                                  beam->num_elements() - 1);
       if (a && b && *a > *b) {
         r.error("elements", fmt::format("first element {} follows last element {}", *a, *b));
         ok = false;
@@ -126,7 +136,8 @@ const std::map<std::string, ForceBuilder>& load_builders() {
 
 void load_loads(const YAML::Node& node, LoadContext& ctx) {
   if (!node.IsSequence()) {
-    ctx.diag.error(node.Mark(), "loads", fmt::format("expected a list of loads, got {}", describe(node)));
+    ctx.diag.error(node.Mark(), "loads",
+                   fmt::format("expected a list of loads, got {}", describe(node)));
     return;
   }
   for (std::size_t i = 0; i < node.size(); ++i) {

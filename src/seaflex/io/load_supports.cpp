@@ -16,7 +16,8 @@ const std::vector<std::string> kComponents{"x", "y", "z", "slope_x", "slope_y", 
 
 void load_supports(const YAML::Node& node, LoadContext& ctx) {
   if (!node.IsSequence()) {
-    ctx.diag.error(node.Mark(), "supports", fmt::format("expected a list of supports, got {}", describe(node)));
+    ctx.diag.error(node.Mark(), "supports",
+                   fmt::format("expected a list of supports, got {}", describe(node)));
     return;
   }
   std::set<std::pair<std::string, Index>> held;  // (body, local coordinate)
@@ -27,16 +28,19 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
     const AncfBeam* beam = ctx.beam_ref(r, "body");
     const auto type = r.choice("type", Need::kRequired, {"clamped", "pinned", "fixed"});
     std::optional<int> k;
-    if (beam) k = ctx.node_ref(r, "node", *beam, Need::kRequired);
-    else r.has("node");
+    if (beam)
+      k = ctx.node_ref(r, "node", *beam, Need::kRequired);
+    else
+      r.has("node");
     std::vector<int> components;
     if (type == "clamped") components = {0, 1, 2, 3, 4, 5};
     if (type == "pinned") components = {0, 1, 2};
     const YAML::Node fix = r.get("fix", type == "fixed" ? Need::kRequired : Need::kOptional,
                                  "a list of components from x, y, z, slope_x, slope_y, slope_z");
     if (fix.IsDefined() && type && *type != "fixed") {
-      r.error("fix", fmt::format("only a support of type 'fixed' takes a component list; '{}' holds {}",
-                                 *type, *type == "clamped" ? "position and slope" : "the position"));
+      r.error("fix",
+              fmt::format("only a support of type 'fixed' takes a component list; '{}' holds {}",
+                          *type, *type == "clamped" ? "position and slope" : "the position"));
     } else if (fix.IsDefined()) {
       if (!fix.IsSequence() || fix.size() == 0) {
         r.error("fix", fmt::format("expected a non-empty list of components from {}, got {}",
@@ -46,8 +50,9 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
           const std::string s = fix[c].IsScalar() ? fix[c].Scalar() : describe(fix[c]);
           const auto it = std::find(kComponents.begin(), kComponents.end(), s);
           if (it == kComponents.end()) {
-            ctx.diag.error(fix[c].Mark(), fmt::format("{}.fix[{}]", path, c),
-                           fmt::format("unknown component '{}'; {}", s, suggestion(s, kComponents)));
+            ctx.diag.error(
+                fix[c].Mark(), fmt::format("{}.fix[{}]", path, c),
+                fmt::format("unknown component '{}'; {}", s, suggestion(s, kComponents)));
             continue;
           }
           const int comp = static_cast<int>(it - kComponents.begin());
@@ -65,17 +70,21 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
     std::vector<double> values;
     std::vector<std::string> labels;
     const auto& g = beam->initial_geometry();
+    std::vector<std::string> twice;
     for (int comp : components) {
       const Index local = 6 * *k + comp;
       if (!held.insert({beam->name(), local}).second) {
-        r.error("node", fmt::format("{}.n{} {} is already held by an earlier support: a coordinate "
-                                    "can be held only once", beam->name(), *k, kComponents[comp]));
+        twice.push_back(kComponents[comp]);
         continue;
       }
       locals.push_back(local);
       values.push_back(comp < 3 ? g.positions[*k][comp] : g.slopes[*k][comp - 3]);
       labels.push_back(kComponents[comp]);
     }
+    if (!twice.empty())
+      r.error("node", fmt::format("{}.n{} {} already held by an earlier support: a coordinate can "
+                                  "be held only once",
+                                  beam->name(), *k, fmt::join(twice, ", ")));
     if (locals.empty()) continue;
     ctx.system.add_constraint(std::make_unique<CoordinateLock>(
         fmt::format("support {}.n{}", beam->name(), *k), *beam, locals, values, labels));

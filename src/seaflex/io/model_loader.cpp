@@ -41,7 +41,8 @@ std::optional<int> LoadContext::node_ref(MapReader& reader, std::string_view key
     const std::string& s = n.Scalar();
     const bool digits = !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
     if (!digits) {
-      reader.error(key, fmt::format("expected a node number (0..{}), start or end; got '{}'", last, s));
+      reader.error(key,
+                   fmt::format("expected a node number (0..{}), start or end; got '{}'", last, s));
       return std::nullopt;
     }
   }

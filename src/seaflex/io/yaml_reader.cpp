@@ -35,7 +35,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   for (std::size_t i = 1; i <= a.size(); ++i) {
     cur[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t sub = prev[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1);
+      const std::size_t sub =
+          prev[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1);
       cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
     }
     std::swap(prev, cur);
@@ -69,16 +70,21 @@ std::string suggestion(std::string_view name, const std::vector<std::string>& ca
 
 std::string describe(const YAML::Node& node) {
   switch (node.Type()) {
-    case YAML::NodeType::Scalar: return fmt::format("'{}'", node.Scalar());
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Map: return "a mapping";
-    case YAML::NodeType::Null: return "nothing";
-    default: return "nothing";
+    case YAML::NodeType::Scalar:
+      return fmt::format("'{}'", node.Scalar());
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a mapping";
+    case YAML::NodeType::Null:
+      return "nothing";
+    default:
+      return "nothing";
   }
 }
 
-std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node,
-                                  const std::string& key, const NumberRule& rule) {
+std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, const std::string& key,
+                                  const NumberRule& rule) {
   const std::string unit = rule.unit.empty() ? "" : " " + rule.unit;
   if (!node.IsScalar()) {
     diag.error(node.Mark(), key, fmt::format("expected a number{}, got {}", unit, describe(node)));
@@ -138,16 +144,18 @@ std::optional<int> read_integer(Diagnostics& diag, const YAML::Node& node, const
 std::optional<Vec3> read_vec3(Diagnostics& diag, const YAML::Node& node, const std::string& key,
                               std::string_view unit) {
   if (!node.IsSequence() || node.size() != 3) {
-    diag.error(node.Mark(), key,
-               fmt::format("expected a list of three numbers [x, y, z]{}{}, got {}",
-                           unit.empty() ? "" : " in ", unit,
-                           node.IsSequence() ? fmt::format("{} entries", node.size()) : describe(node)));
+    diag.error(
+        node.Mark(), key,
+        fmt::format("expected a list of three numbers [x, y, z]{}{}, got {}",
+                    unit.empty() ? "" : " in ", unit,
+                    node.IsSequence() ? fmt::format("{} entries", node.size()) : describe(node)));
     return std::nullopt;
   }
   Vec3 v;
   bool ok = true;
   for (int i = 0; i < 3; ++i) {
-    const auto x = read_number(diag, node[i], fmt::format("{}[{}]", key, i), NumberRule::any(std::string(unit)));
+    const auto x = read_number(diag, node[i], fmt::format("{}[{}]", key, i),
+                               NumberRule::any(std::string(unit)));
     if (x)
       v[i] = *x;
     else
@@ -159,7 +167,8 @@ std::optional<Vec3> read_vec3(Diagnostics& diag, const YAML::Node& node, const s
 MapReader::MapReader(Diagnostics& diag, YAML::Node node, std::string path)
     : diag_(diag), node_(std::move(node)), path_(std::move(path)) {
   if (!node_.IsMap()) {
-    diag_.error(node_.Mark(), path_, fmt::format("expected a mapping of keys, got {}", describe(node_)));
+    diag_.error(node_.Mark(), path_,
+                fmt::format("expected a mapping of keys, got {}", describe(node_)));
     return;
   }
   valid_ = true;
@@ -174,6 +183,7 @@ MapReader::MapReader(Diagnostics& diag, YAML::Node node, std::string path)
 }
 
 std::string MapReader::key_path(std::string_view key) const {
+  if (key.empty()) return path_;
   return path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
 }
 
@@ -232,12 +242,13 @@ std::optional<std::string> MapReader::choice(std::string_view key, Need need,
   }
   const std::string& v = n.Scalar();
   if (std::find(options.begin(), options.end(), v) != options.end()) return v;
-  diag_.error(n.Mark(), key_path(key), fmt::format("unknown value '{}'; {}", v, suggestion(v, options)));
+  diag_.error(n.Mark(), key_path(key),
+              fmt::format("unknown value '{}'; {}", v, suggestion(v, options)));
   return std::nullopt;
 }
 
 std::optional<Vec3> MapReader::vec3(std::string_view key, Need need, std::string_view unit) {
-  const YAML::Node n = get(key, need, "[x, y, z]");
+  const YAML::Node n = get(key, need, fmt::format("[x, y, z] in {}", unit));
   if (!n.IsDefined()) return std::nullopt;
   return read_vec3(diag_, n, key_path(key), unit);
 }
@@ -258,9 +269,10 @@ std::optional<std::vector<std::vector<double>>> MapReader::table(std::string_vie
     const YAML::Node row = n[r];
     const std::string rk = fmt::format("{}[{}]", key_path(key), r);
     if (!row.IsSequence() || static_cast<int>(row.size()) != columns) {
-      diag_.error(row.Mark(), rk, fmt::format("expected a row of {} numbers, got {}", columns,
-                                              row.IsSequence() ? fmt::format("{} entries", row.size())
-                                                               : describe(row)));
+      diag_.error(
+          row.Mark(), rk,
+          fmt::format("expected a row of {} numbers, got {}", columns,
+                      row.IsSequence() ? fmt::format("{} entries", row.size()) : describe(row)));
       ok = false;
       continue;
     }
@@ -271,8 +283,9 @@ std::optional<std::vector<std::vector<double>>> MapReader::table(std::string_vie
       values.push_back(x.value_or(0.0));
     }
     if (ok && !rows.empty() && !(values[0] > rows.back()[0])) {
-      diag_.error(row.Mark(), rk,
-                  fmt::format("times must increase strictly: {} follows {}", values[0], rows.back()[0]));
+      diag_.error(
+          row.Mark(), rk,
+          fmt::format("times must increase strictly: {} follows {}", values[0], rows.back()[0]));
       ok = false;
     }
     rows.push_back(std::move(values));
@@ -288,7 +301,8 @@ void MapReader::finish() {
       std::vector<std::string> options = known_;
       std::sort(options.begin(), options.end());
       options.erase(std::unique(options.begin(), options.end()), options.end());
-      diag_.error(kv.first.Mark(), key_path(k), fmt::format("unknown key; {}", suggestion(k, options)));
+      diag_.error(kv.first.Mark(), key_path(k),
+                  fmt::format("unknown key; {}", suggestion(k, options)));
     }
   }
 }

@@ -98,8 +98,8 @@ class MapReader {
 };
 
 /// A scalar as a finite double; nullopt (and an error) otherwise.
-std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node,
-                                  const std::string& key, const NumberRule& rule);
+std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, const std::string& key,
+                                  const NumberRule& rule);
 /// A scalar as an int in [min, max].
 std::optional<int> read_integer(Diagnostics& diag, const YAML::Node& node, const std::string& key,
                                 int min, int max);

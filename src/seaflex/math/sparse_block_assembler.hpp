@@ -36,8 +36,7 @@ class SparseBlockAssembler {
   void add(BlockId id, const Eigen::Ref<const MatX>& block, double scale = 1.0);
   /// matrix(cols[j], rows[i]) += scale * block(i, j): adds the transpose into the
   /// mirrored position (the block must have been declared with rows/cols swapped).
-  void add_transposed(BlockId mirrored_id, const Eigen::Ref<const MatX>& block,
-                      double scale = 1.0);
+  void add_transposed(BlockId mirrored_id, const Eigen::Ref<const MatX>& block, double scale = 1.0);
 
   const SpMat& matrix() const { return matrix_; }
   SpMat& matrix() { return matrix_; }
@@ -57,9 +56,9 @@ class SparseBlockAssembler {
   Index cols_ = 0;
   bool finalized_ = false;
   std::vector<Block> blocks_;
-  std::vector<Index> row_index_;   // per block: its row list
-  std::vector<Index> col_index_;   // per block: its column list
-  std::vector<int> value_pos_;     // per block entry (column-major): position in valuePtr
+  std::vector<Index> row_index_;  // per block: its row list
+  std::vector<Index> col_index_;  // per block: its column list
+  std::vector<int> value_pos_;    // per block entry (column-major): position in valuePtr
   SpMat matrix_;
 };
 

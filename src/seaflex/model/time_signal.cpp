@@ -49,7 +49,8 @@ TimeSignal TimeSignal::table(std::vector<double> times, std::vector<double> valu
 
 double TimeSignal::operator()(double t) const {
   switch (kind_) {
-    case Kind::kConstant: return a_;
+    case Kind::kConstant:
+      return a_;
     case Kind::kRamp:
       if (t <= a_) return 0.0;
       if (t >= a_ + b_) return 1.0;

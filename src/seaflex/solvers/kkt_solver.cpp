@@ -14,6 +14,8 @@ bool KktSolver::factorize(const SpMat& A) {
   return factorized_;
 }
 
-void KktSolver::solve(const VecX& b, VecX& x) const { x = lu_.solve(b); }
+void KktSolver::solve(const VecX& b, VecX& x) const {
+  x = lu_.solve(b);
+}
 
 }  // namespace seaflex

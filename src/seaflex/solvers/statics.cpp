@@ -23,7 +23,10 @@ struct Residual {
 class NewtonStatics {
  public:
   NewtonStatics(const Dae& dae, const StaticsSettings& settings)
-      : dae_(dae), s_(settings), eval_(dae.make_eval()), n_(dae.num_coordinates()),
+      : dae_(dae),
+        s_(settings),
+        eval_(dae.make_eval()),
+        n_(dae.num_coordinates()),
         m_(dae.num_constraints()) {
     rhs_.resize(n_ + m_);
   }
@@ -52,18 +55,23 @@ class NewtonStatics {
     return res;
   }
 
-  // Newton iterations at a fixed load factor; true on convergence
+  // Newton iterations at a fixed load factor; true on convergence. Converged when the
+  // force residual is below the tolerance relative to the largest force term, or when the
+  // Newton update is at round-off level (then the residual is at its noise floor, e.g. an
+  // unloaded structure whose forces are all round-off), with the constraints satisfied.
   bool solve(State& state, double load_factor, int& iterations, Residual& res) {
     failure_.clear();
-    const double c_tol = 1e-10 * std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+    const double q_scale = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+    const double c_tol = 1e-10 * q_scale;
     res = residual(state, load_factor);
     for (int it = 0; it < s_.max_iterations; ++it) {
       if (!res.finite) return false;
-      if (res.force <= s_.tolerance && res.constraint <= c_tol && it > 0) return true;
+      if (res.force <= s_.tolerance && res.constraint <= c_tol) return true;
       if (!solver_.factorize(eval_.kkt.matrix())) {
-        failure_ = fmt::format("the tangent matrix is singular ({}): a mechanism, a body without "
-                               "supports, or coordinates without stiffness",
-                               solver_.message());
+        failure_ = fmt::format(
+            "the tangent matrix is singular ({}): a mechanism, a body without "
+            "supports, or coordinates without stiffness",
+            solver_.message());
         return false;
       }
       rhs_.head(n_) = r_;
@@ -74,23 +82,23 @@ class NewtonStatics {
         return false;
       }
       ++iterations;
+      const double update = dx_.head(n_).lpNorm<Eigen::Infinity>();
       // backtracking line search on the merit function
-      const State start = state;
+      start_ = state;
       const double merit0 = res.merit;
       double alpha = 1.0;
       for (int ls = 0;; ++ls) {
-        state.q = start.q + alpha * dx_.head(n_);
-        state.lambda = start.lambda + alpha * dx_.tail(m_);
+        state.q = start_.q + alpha * dx_.head(n_);
+        state.lambda = start_.lambda + alpha * dx_.tail(m_);
         res = residual(state, load_factor);
         if (!s_.line_search || (res.finite && res.merit <= (1.0 - 1e-4 * alpha) * merit0) ||
             ls >= 8)
           break;
         alpha *= 0.5;
       }
-      // converged on the update itself: the force residual is at round-off level
-      if (res.force <= s_.tolerance && res.constraint <= c_tol) return res.finite;
+      if (res.finite && update <= 1e-13 * q_scale && res.constraint <= c_tol) return true;
     }
-    return false;
+    return res.finite && res.force <= s_.tolerance && res.constraint <= c_tol;
   }
 
   const Dae& dae_;
@@ -99,6 +107,7 @@ class NewtonStatics {
   KktSolver solver_;
   Index n_, m_;
   VecX r_, rhs_, dx_;
+  State start_;
   std::string failure_;  // why the last solve failed, when it was not plain non-convergence
 };
 
@@ -109,7 +118,8 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
   NewtonStatics newton(dae, settings);
   state.t = settings.time;
   state.v.setZero();
-  if (state.lambda.size() != dae.num_constraints()) state.lambda = VecX::Zero(dae.num_constraints());
+  if (state.lambda.size() != dae.num_constraints())
+    state.lambda = VecX::Zero(dae.num_constraints());
   StaticsReport report;
   double factor = 0.0;
   double increment = 1.0 / std::max(1, settings.load_steps);

@@ -14,18 +14,18 @@
 namespace seaflex {
 
 struct StaticsSettings {
-  int load_steps = 1;         ///< initial number of equal load increments
-  int max_iterations = 50;    ///< Newton iterations per increment
-  double tolerance = 1e-8;    ///< residual relative to the largest force term
+  int load_steps = 1;           ///< initial number of equal load increments
+  int max_iterations = 50;      ///< Newton iterations per increment
+  double tolerance = 1e-8;      ///< residual relative to the largest force term
   double min_increment = 1e-4;  ///< smallest load increment before giving up
-  double time = 0.0;          ///< time at which time-varying loads are evaluated
+  double time = 0.0;            ///< time at which time-varying loads are evaluated
   bool line_search = true;
 };
 
 struct StaticsReport {
-  int increments = 0;        ///< load increments taken
-  int iterations = 0;        ///< Newton iterations in all
-  double residual = 0.0;     ///< final relative force residual
+  int increments = 0;                 ///< load increments taken
+  int iterations = 0;                 ///< Newton iterations in all
+  double residual = 0.0;              ///< final relative force residual
   double constraint_violation = 0.0;  ///< final max |C|
 };
 

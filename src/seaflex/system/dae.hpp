@@ -16,10 +16,10 @@ namespace seaflex {
 
 /// What one evaluation computes.
 struct DaeRequest {
-  bool forces = true;       ///< Q
-  bool constraints = true;  ///< C, Cdot = C_q v + C_t, gamma
-  bool matrix = false;      ///< the KKT matrix below
-  MatrixScales scales;      ///< km, kq, kv of the top-left block
+  bool forces = true;        ///< Q
+  bool constraints = true;   ///< C, Cdot = C_q v + C_t, gamma
+  bool matrix = false;       ///< the KKT matrix below
+  MatrixScales scales;       ///< km, kq, kv of the top-left block
   double load_factor = 1.0;  ///< scales external loads (static load stepping)
   /// adds kq * d(C_q^T lambda)/dq (state.lambda) to the top-left block (Newton methods)
   bool multiplier_hessian = false;

@@ -8,7 +8,8 @@ namespace seaflex {
 
 Body& System::add_body(std::unique_ptr<Body> body) {
   if (finalized_) throw std::logic_error("System: add_body after finalize");
-  if (find_body(body->name())) throw std::invalid_argument("System: duplicate body " + body->name());
+  if (find_body(body->name()))
+    throw std::invalid_argument("System: duplicate body " + body->name());
   bodies_.push_back(std::move(body));
   return *bodies_.back();
 }

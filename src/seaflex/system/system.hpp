@@ -62,7 +62,7 @@ class System : public Dae {
   bool finalized_ = false;
   Index n_ = 0;
   Index m_ = 0;
-  std::vector<Index> row_offset_;                 // constraint -> first row
+  std::vector<Index> row_offset_;  // constraint -> first row
   std::vector<std::vector<Index>> constraint_dofs_;
   std::vector<math::BlockId> cq_block_, cqt_block_, hess_block_;
   math::SparseBlockAssembler pattern_;

@@ -1,0 +1,186 @@
+#!/usr/bin/env python3
+"""End-to-end tests of the seaflex command line: the examples run, output files have the
+documented layout, bad input exits 2 with a located message, solver failures exit 3 and
+keep the results computed up to the failure, and runs are deterministic.
+
+usage: test_cli.py SEAFLEX_EXECUTABLE SOURCE_DIR
+"""
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SEAFLEX = sys.argv[1] if len(sys.argv) > 1 else "build/seaflex"
+SRC = sys.argv[2] if len(sys.argv) > 2 else "."
+EXAMPLES = os.path.join(SRC, "examples")
+
+
+def run(*args, timeout=300):
+    return subprocess.run([SEAFLEX, *args], capture_output=True, text=True, timeout=timeout)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], [[float(x) for x in r] for r in rows[1:]]
+
+
+CANTILEVER = """
+environment: {gravity: 9.81}
+bodies:
+  beam: {type: ancf_beam, start: [0, 0, 0], end: [10, 0, 0], elements: 10, area: 0.01,
+         second_moment: 8.33e-6, youngs_modulus: 210e9, density: 7850}
+supports:
+  - {body: beam, node: start, type: clamped}
+"""
+
+
+class Cli(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def model(self, text, name="model.yaml"):
+        path = os.path.join(self.dir, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_check_every_example(self):
+        for name in sorted(os.listdir(EXAMPLES)):
+            if name.endswith(".yaml"):
+                r = run("check", os.path.join(EXAMPLES, name))
+                self.assertEqual(r.returncode, 0, name + r.stderr)
+                self.assertIn("model OK", r.stdout)
+
+    def test_statics_csv(self):
+        out = os.path.join(self.dir, "out")
+        r = run("statics", os.path.join(EXAMPLES, "cantilever.yaml"), "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "statics.csv"))
+        self.assertEqual(header[:4], ["time", "beam.n0.x", "beam.n0.y", "beam.n0.z"])
+        self.assertEqual(header[-1], "beam.n10.z")
+        self.assertEqual(len(header), 1 + 3 * 11)
+        self.assertEqual(len(rows), 1)
+        tip_z = rows[0][header.index("beam.n10.z")]
+        # large-rotation (elastica) value 0.548954 m; linear theory 0.5503 m
+        self.assertAlmostEqual(tip_z, -0.548954, delta=2e-5)
+        # the thesis beam (795 kg): elastica 0.5559 m, linear 0.5573 m
+        r = run("statics", os.path.join(EXAMPLES, "cantilever_thesis.yaml"), "-o", out)
+        header, rows = read_csv(os.path.join(out, "statics.csv"))
+        self.assertAlmostEqual(rows[0][header.index("beam.n10.z")] / -0.5573, 1.0, delta=5e-3)
+
+    def test_run_writes_timeseries(self):
+        path = self.model(CANTILEVER + "dynamics: {time_step: 4e-5, duration: 0.2, output_interval: 0.01}\n")
+        out = os.path.join(self.dir, "out")
+        r = run("run", path, "-o", out, "--quiet")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        self.assertEqual(header[0], "time")
+        self.assertEqual(len(rows), 21)
+        self.assertEqual(rows[0][0], 0.0)
+        self.assertAlmostEqual(rows[-1][0], 0.2, delta=1e-12)
+        # released straight under gravity: the tip starts falling as g t^2/2 at first
+        # (its first 0.2 s are mostly free fall of the outer part)
+        tip = header.index("beam.n10.z")
+        self.assertEqual(rows[0][tip], 0.0)
+        self.assertLess(rows[-1][tip], -0.05)
+
+    def test_run_from_statics_stays_in_equilibrium(self):
+        path = self.model(CANTILEVER + "dynamics: {time_step: 4e-5, duration: 0.1, output_interval: 0.05, "
+                          "initial_state: statics}\n")
+        out = os.path.join(self.dir, "out")
+        r = run("run", path, "-o", out, "--quiet")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.exists(os.path.join(out, "statics.csv")))
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        tip = header.index("beam.n10.z")
+        # at rest in equilibrium it stays: drift far below 1 micrometre
+        for row in rows:
+            self.assertAlmostEqual(row[tip], rows[0][tip], delta=1e-7)
+
+    def test_progress_line_and_quiet(self):
+        # the main example lasts more than two seconds: a progress line appears, unless --quiet
+        ex = os.path.join(EXAMPLES, "cantilever.yaml")
+        r = run("run", ex, "-o", os.path.join(self.dir, "a"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("[seaflex] t = ", r.stderr)
+        r = run("run", ex, "-o", os.path.join(self.dir, "b"), "--quiet")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertNotIn("[seaflex]", r.stderr)
+        # and the two runs are identical byte for byte
+        with open(os.path.join(self.dir, "a", "timeseries.csv"), "rb") as a, \
+                open(os.path.join(self.dir, "b", "timeseries.csv"), "rb") as b:
+            self.assertEqual(a.read(), b.read())
+
+    def test_modes(self):
+        path = self.model(CANTILEVER.replace("gravity: 9.81", "gravity: 0"))
+        out = os.path.join(self.dir, "out")
+        r = run("modes", path, "-o", out, "-n", "4")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "modes.csv"))
+        self.assertEqual(header, ["mode", "frequency_hz", "period_s", "omega_rad_s"])
+        self.assertEqual(len(rows), 4)
+        # Euler-Bernoulli: 1.8751^2 sqrt(EI / (rho A L^4)) / 2 pi = 0.83535 Hz, twice (y and z)
+        self.assertAlmostEqual(rows[0][1], 0.83535, delta=1e-4)
+        self.assertAlmostEqual(rows[1][1], 0.83535, delta=1e-4)
+
+    def test_bad_input_exits_2_with_location(self):
+        path = self.model(CANTILEVER.replace("density: 7850", "density: 7.85"), "bad.yaml")
+        for cmd in ("check", "statics", "run"):
+            r = run(cmd, path, "-o", os.path.join(self.dir, "out")) if cmd != "check" else run(cmd, path)
+            self.assertEqual(r.returncode, 2, cmd)
+            self.assertIn("bad.yaml:5:66:", r.stderr)
+            self.assertIn("bodies.beam.density: 7.85 kg/m^3 is implausibly low", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.dir, "out")))  # rejected before solving
+
+    def test_missing_file_and_usage(self):
+        r = run("check", os.path.join(self.dir, "nope.yaml"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("nope.yaml: cannot open the model file", r.stderr)
+        self.assertEqual(run().returncode, 2)
+        self.assertEqual(run("frobnicate").returncode, 2)
+        self.assertEqual(run("--help").returncode, 0)
+
+    def test_run_without_dynamics(self):
+        path = self.model(CANTILEVER)
+        r = run("run", path, "-o", os.path.join(self.dir, "out"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("dynamics: 'seaflex run' needs a dynamics section", r.stderr)
+
+    def test_divergence_exits_3_and_keeps_results(self):
+        # RK4 at 1e-3 s, 18 times its stability limit (5.6e-5 s) for this mesh
+        path = self.model(CANTILEVER + "dynamics: {time_step: 1e-3, duration: 10, output_interval: 1e-3}\n")
+        out = os.path.join(self.dir, "out")
+        r = run("run", path, "-o", out)
+        self.assertEqual(r.returncode, 3, r.stderr)
+        self.assertIn("the solution diverged", r.stderr)
+        self.assertIn("time step 0.001 s is likely above the stability limit of rk4", r.stderr)
+        self.assertIn("results up to the failure are in", r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        t_fail = float(r.stderr.split("t = ")[1].split(" s")[0])
+        self.assertGreater(len(rows), 2)
+        self.assertLess(t_fail, 1.0)  # caught within the first second
+        self.assertLess(rows[-1][0], t_fail)
+        for row in rows:  # every kept row is finite
+            self.assertTrue(all(abs(x) < 1e300 for x in row))
+
+    def test_statics_failure_exits_3_and_keeps_last_increment(self):
+        # a beam with no supports has no static equilibrium
+        path = self.model(CANTILEVER.split("supports:")[0] + "statics: {load_steps: 2}\n")
+        out = os.path.join(self.dir, "out")
+        r = run("statics", path, "-o", out)
+        self.assertEqual(r.returncode, 3)
+        self.assertIn("statics did not converge at load factor", r.stderr)
+        self.assertIn("the tangent matrix is singular", r.stderr)
+        header, rows = read_csv(os.path.join(out, "statics_partial.csv"))
+        self.assertEqual(len(rows), 1)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0], "-v"])
