@@ -154,7 +154,7 @@ class Cli(unittest.TestCase):
         self.assertIn("dynamics: 'seaflex run' needs a dynamics section", r.stderr)
 
     def test_divergence_exits_3_and_keeps_results(self):
-        # RK4 at 1e-3 s, 18 times its stability limit (5.6e-5 s) for this mesh
+        # RK4 at 1e-3 s, 17 times its stability limit (2 sqrt(2) / omega_max = 5.7e-5 s) for this mesh
         path = self.model(CANTILEVER + "dynamics: {time_step: 1e-3, duration: 10, output_interval: 1e-3}\n")
         out = os.path.join(self.dir, "out")
         r = run("run", path, "-o", out)

@@ -185,15 +185,30 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"huge element count", replace(kBase, "elements: 10", "elements: 100000000"),
                 "m.yaml:6:15: bodies.beam.elements: must be between 1 and 100000, got 100000000"},
         BadCase{"infinite number", replace(kBase, "area: 0.01", "area: .inf"),
-                "m.yaml:7:11: bodies.beam.area: expected a number m^2, got '.inf'"},
+                "m.yaml:7:11: bodies.beam.area: expected a number in m^2, got '.inf'"},
+        BadCase{"both section forms",
+                replace(kBase, "    area: 0.01\n", "    area: 0.01\n    outer_diameter: 0.3\n"),
+                "m.yaml:7:11: bodies.beam.area: give the section either as "
+                "outer_diameter/inner_diameter or as area/second_moment, not both"},
+        BadCase{
+            "gauss points of a closed form",
+            replace(kBase, "    density: 7850\n",
+                    "    density: 7850\n    axial_model: L2\n    bending_model: T2\n    "
+                    "gauss_points: 7\n"),
+            "m.yaml:13:19: bodies.beam.gauss_points: applies only to the exact axial or bending "
+            "model; L1, L2, T1 and T2 are closed forms"},
+        BadCase{"node as a list", replace(kBase, "node: start", "node: [1]"),
+                "m.yaml:12:24: supports[0].node: expected a node number (0..10), start or end; got "
+                "a list"},
         BadCase{"no bodies", "bodies: {}\n", "m.yaml:1:9: bodies: the model has no bodies"},
         BadCase{"empty file", "", "m.yaml: the model file is empty"},
         BadCase{"not a mapping", "- 1\n- 2\n",
                 "m.yaml:1:1: expected a mapping of keys, got a list"},
-        BadCase{"body name with a dot", replace(kBase, "  beam:", "  my.beam:"),
-                "m.yaml:2:3: bodies.my.beam: body names may use letters, digits, '_' and '-' only "
-                "(they become output channel names such as <body>.n0.x)\n"
-                "m.yaml:12:12: supports[0].body: no body named 'beam'; nothing is expected here"}),
+        BadCase{
+            "body name with a dot", replace(kBase, "  beam:", "  my.beam:"),
+            "m.yaml:2:3: bodies.my.beam: body names may use letters, digits, '_' and '-' only "
+            "(they become output channel names such as <body>.n0.x)\n"
+            "m.yaml:12:12: supports[0].body: no body named 'beam': the model has no valid bodies"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.what;
       for (char& c : name)

@@ -25,20 +25,22 @@ inline double cantilever_omega(int n, double EI, double rhoA, double L) {
 /// Large-deflection (inextensible elastica) cantilever under its own weight q (N/m):
 ///   theta' = M / EI,  M' = -q (L - s) cos(theta),  theta(0) = 0,  M(L) = 0,
 /// with theta the downward slope angle and M the bending moment; solved by shooting on
-/// M(0) with the secant method and RK4 (n steps) in s. Returns the tip's vertical
+/// M(0) by bisection and RK4 (n steps) in s. Returns the tip's vertical
 /// deflection and its horizontal shortening L - x_tip.
 struct ElasticaTip {
   double deflection;
   double shortening;
 };
 
-inline ElasticaTip elastica_cantilever(double q, double L, double EI, int n = 4000) {
+/// With a vertical tip load P (N, downward) as well: M' = -(q (L - s) + P) cos(theta).
+inline ElasticaTip elastica_cantilever(double q, double L, double EI, int n = 4000,
+                                       double P = 0.0) {
   // integrates (theta, M, x, z) from 0 to L for a given M(0)
   auto integrate = [&](double M0, double* x_tip, double* z_tip) {
     double y[4] = {0.0, M0, 0.0, 0.0};  // theta, M, x, z (down positive)
     auto f = [&](double s, const double* v, double* d) {
       d[0] = v[1] / EI;
-      d[1] = -q * (L - s) * std::cos(v[0]);
+      d[1] = -(q * (L - s) + P) * std::cos(v[0]);
       d[2] = std::cos(v[0]);
       d[3] = std::sin(v[0]);
     };
@@ -59,14 +61,16 @@ inline ElasticaTip elastica_cantilever(double q, double L, double EI, int n = 40
     if (z_tip) *z_tip = y[3];
     return y[1];  // M(L), to be zero
   };
-  double a = 0.5 * q * L * L, b = 0.45 * q * L * L;
-  double fa = integrate(a, nullptr, nullptr), fb = integrate(b, nullptr, nullptr);
-  for (int it = 0; it < 60 && std::abs(fb) > 1e-13 * q * L * L; ++it) {
-    const double c = b - fb * (b - a) / (fb - fa);
-    a = b;
-    fa = fb;
-    b = c;
-    fb = integrate(b, nullptr, nullptr);
+  // the root moment lies in (0, M_lin], M_lin that of linear theory (the load arm only
+  // shortens); M(L) grows with M(0): bisection to round-off
+  const double M_lin = 0.5 * q * L * L + P * L;
+  double lo = 0.0, hi = M_lin, b = M_lin;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * M_lin; ++it) {
+    b = 0.5 * (lo + hi);
+    if (integrate(b, nullptr, nullptr) > 0.0)
+      hi = b;
+    else
+      lo = b;
   }
   double x = 0, z = 0;
   integrate(b, &x, &z);

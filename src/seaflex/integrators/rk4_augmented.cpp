@@ -74,9 +74,13 @@ bool Rk4Augmented::project(const Dae& dae, State& state, double& violation) {
     solver_.solve(rhs_, sol_);
     state.q += sol_.head(n_);
   }
-  // velocities: [M C_q^T; C_q 0][dv; mu] = [0; -(C_q v + C_t)]
+  // velocities: [M C_q^T; C_q 0][dv; mu] = [0; -(C_q v + C_t)], unless already at
+  // round-off (always so for linear constraints: every RK4 stage satisfies C_q a = gamma)
   dae.evaluate(state, req, eval_);
   violation = eval_.C.lpNorm<Eigen::Infinity>();
+  if (eval_.Cdot.lpNorm<Eigen::Infinity>() <=
+      1e-14 * std::max(1.0, state.v.lpNorm<Eigen::Infinity>()))
+    return true;
   if (!factor_at(dae, state)) return false;
   rhs_.head(n_).setZero();
   rhs_.tail(m_) = -eval_.Cdot;

@@ -13,9 +13,12 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
   bool ok = true;
   // geometry: start/end or polyline
   std::optional<BeamGeometry> geometry;
-  const bool straight = r.has("start") || r.has("end");
+  // evaluate every has(): each call also registers its key as known
+  const bool has_start = r.has("start"), has_end = r.has("end");
+  const bool straight = has_start || has_end;
   const bool poly = r.has("polyline");
   if (straight && poly) {
+    r.has("elements");
     r.error("polyline", "give either start and end, or polyline, not both");
     ok = false;
   } else if (poly) {
@@ -108,8 +111,10 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
                         *rho));
     ok = false;
   }
-  const bool pipe = r.has("outer_diameter") || r.has("inner_diameter");
-  const bool explicit_section = r.has("area") || r.has("second_moment");
+  const bool has_od = r.has("outer_diameter"), has_id = r.has("inner_diameter");
+  const bool has_area = r.has("area"), has_inertia = r.has("second_moment");
+  const bool pipe = has_od || has_id;
+  const bool explicit_section = has_area || has_inertia;
   if (pipe && explicit_section) {
     r.error("area",
             "give the section either as outer_diameter/inner_diameter or as area/second_moment, "
@@ -144,7 +149,16 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
     options.bending = *m == "T1"   ? ancf_cable::BendingModel::kT1
                       : *m == "T2" ? ancf_cable::BendingModel::kT2
                                    : ancf_cable::BendingModel::kExact;
-  if (const auto g = r.integer("gauss_points", Need::kOptional, 2, 20)) options.gauss_points = *g;
+  if (const auto g = r.integer("gauss_points", Need::kOptional, 2, 20)) {
+    options.gauss_points = *g;
+    if (options.axial != ancf_cable::AxialModel::kExact &&
+        options.bending != ancf_cable::BendingModel::kExact) {
+      r.error("gauss_points",
+              "applies only to the exact axial or bending model; L1, L2, T1 and "
+              "T2 are closed forms");
+      ok = false;
+    }
+  }
   if (options.axial == ancf_cable::AxialModel::kL1 &&
       options.bending == ancf_cable::BendingModel::kExact) {
     // L1 restrains only the chord length, the exact curvature only r' x r'': the length of

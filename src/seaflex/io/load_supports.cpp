@@ -44,7 +44,8 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
     } else if (fix.IsDefined()) {
       if (!fix.IsSequence() || fix.size() == 0) {
         r.error("fix", fmt::format("expected a non-empty list of components from {}, got {}",
-                                   fmt::join(kComponents, ", "), describe(fix)));
+                                   fmt::join(kComponents, ", "),
+                                   fix.IsSequence() ? "an empty list" : describe(fix)));
       } else {
         for (std::size_t c = 0; c < fix.size(); ++c) {
           const std::string s = fix[c].IsScalar() ? fix[c].Scalar() : describe(fix[c]);

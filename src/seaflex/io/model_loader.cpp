@@ -20,7 +20,9 @@ const AncfBeam* LoadContext::beam_ref(MapReader& reader, std::string_view key) {
   if (!body) {
     std::vector<std::string> names;
     for (const auto& b : system.bodies()) names.push_back(b->name());
-    reader.error(key, fmt::format("no body named '{}'; {}", *name, suggestion(*name, names)));
+    reader.error(key, names.empty()
+                          ? fmt::format("no body named '{}': the model has no valid bodies", *name)
+                          : fmt::format("no body named '{}'; {}", *name, suggestion(*name, names)));
     return nullptr;
   }
   const auto* beam = dynamic_cast<const AncfBeam*>(body);
@@ -37,7 +39,12 @@ std::optional<int> LoadContext::node_ref(MapReader& reader, std::string_view key
   if (n.IsScalar() && n.Scalar() == "start") return 0;
   if (n.IsScalar() && n.Scalar() == "end") return beam.num_nodes() - 1;
   const int last = beam.num_nodes() - 1;
-  if (n.IsScalar()) {
+  if (!n.IsScalar()) {
+    reader.error(key, fmt::format("expected a node number (0..{}), start or end; got {}", last,
+                                  describe(n)));
+    return std::nullopt;
+  }
+  {
     const std::string& s = n.Scalar();
     const bool digits = !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
     if (!digits) {
@@ -71,7 +78,7 @@ Model load(const YAML::Node& root, const std::string& name) {
         if (const auto v = read_vec3(diag, g, "environment.gravity", "m/s^2")) model.gravity = *v;
       } else if (const auto m = read_number(diag, g, "environment.gravity",
                                             NumberRule::range(0.0, 100.0, "m/s^2"))) {
-        model.gravity = Vec3(0, 0, -*m);
+        model.gravity = Vec3(0, 0, *m > 0.0 ? -*m : 0.0);
       }
     }
     r.finish();

@@ -85,9 +85,11 @@ std::string describe(const YAML::Node& node) {
 
 std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, const std::string& key,
                                   const NumberRule& rule) {
+  const std::string in_unit = rule.unit.empty() ? "" : " in " + rule.unit;
   const std::string unit = rule.unit.empty() ? "" : " " + rule.unit;
   if (!node.IsScalar()) {
-    diag.error(node.Mark(), key, fmt::format("expected a number{}, got {}", unit, describe(node)));
+    diag.error(node.Mark(), key,
+               fmt::format("expected a number{}, got {}", in_unit, describe(node)));
     return std::nullopt;
   }
   const std::string& s = node.Scalar();
@@ -97,7 +99,7 @@ std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, con
   if (first != last && *first == '+') ++first;
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (ec != std::errc() || ptr != last || s.empty()) {
-    diag.error(node.Mark(), key, fmt::format("expected a number{}, got '{}'", unit, s));
+    diag.error(node.Mark(), key, fmt::format("expected a number{}, got '{}'", in_unit, s));
     return std::nullopt;
   }
   if (!std::isfinite(value)) {
@@ -128,7 +130,8 @@ std::optional<int> read_integer(Diagnostics& diag, const YAML::Node& node, const
   }
   const std::string& s = node.Scalar();
   long long value = 0;
-  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  const char* first = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
+  const auto [ptr, ec] = std::from_chars(first, s.data() + s.size(), value);
   if (ec == std::errc::result_out_of_range ||
       (ec == std::errc() && ptr == s.data() + s.size() && (value < min || value > max))) {
     diag.error(node.Mark(), key, fmt::format("must be between {} and {}, got {}", min, max, s));

@@ -10,6 +10,10 @@
 
 namespace seaflex {
 
+/// Largest number of coordinates one attachment point may depend on (an ANCF plate
+/// element has 48); lets force elements keep their scratch matrices on the stack.
+inline constexpr int kMaxAttachmentCoordinates = 48;
+
 class Attachment {
  public:
   virtual ~Attachment() = default;

@@ -15,7 +15,6 @@ namespace {
 struct Residual {
   double force = 0.0;       // ||Q - C_q^T mu||_inf / scale
   double constraint = 0.0;  // ||C||_inf
-  double merit = 0.0;       // for the line search
   Index worst = 0;          // coordinate of the largest force residual
   bool finite = true;
 };
@@ -51,7 +50,6 @@ class NewtonStatics {
     res.constraint = m_ > 0 ? eval_.C.lpNorm<Eigen::Infinity>() : 0.0;
     res.finite = r_.allFinite() && eval_.C.allFinite();
     r_.cwiseAbs().maxCoeff(&res.worst);
-    res.merit = std::sqrt(r_.squaredNorm() / (scale * scale) + eval_.C.squaredNorm());
     return res;
   }
 
@@ -83,22 +81,52 @@ class NewtonStatics {
       }
       ++iterations;
       const double update = dx_.head(n_).lpNorm<Eigen::Infinity>();
-      // backtracking line search on the merit function
       start_ = state;
-      const double merit0 = res.merit;
-      double alpha = 1.0;
-      for (int ls = 0;; ++ls) {
-        state.q = start_.q + alpha * dx_.head(n_);
-        state.lambda = start_.lambda + alpha * dx_.tail(m_);
-        res = residual(state, load_factor);
-        if (!s_.line_search || (res.finite && res.merit <= (1.0 - 1e-4 * alpha) * merit0) ||
-            ls >= 8)
-          break;
-        alpha *= 0.5;
-      }
+      const double g0 = dx_.head(n_).dot(r_);
+      take_step(state, 1.0, load_factor, res);
+      if (s_.line_search) line_search(state, load_factor, g0, res);
       if (res.finite && update <= 1e-13 * q_scale && res.constraint <= c_tol) return true;
     }
     return res.finite && res.force <= s_.tolerance && res.constraint <= c_tol;
+  }
+
+  void take_step(State& state, double alpha, double load_factor, Residual& res) {
+    state.q = start_.q + alpha * dx_.head(n_);
+    state.lambda = start_.lambda + alpha * dx_.tail(m_);
+    res = residual(state, load_factor);
+  }
+
+  // Energy line search (Crisfield 1991, Non-linear Finite Element Analysis of Solids and
+  // Structures, vol. 1, sec. 9.3): along the Newton direction dq, g(alpha) = dq . r(q +
+  // alpha dq) is minus the derivative of the potential. The full step stands while the
+  // potential still falls at alpha = 1 (g > 0) or has nearly stopped (|g| <= 0.8 g0);
+  // after an overshoot the minimum is bracketed and found by regula falsi. A step to a
+  // non-finite state is halved. (A residual-norm search stalls Newton at large rotations,
+  // where full steps raise the residual on their way to convergence.)
+  void line_search(State& state, double load_factor, double g0, Residual& res) {
+    double alpha = 1.0;
+    for (int k = 0; k < 8 && !res.finite; ++k) {
+      alpha *= 0.5;
+      take_step(state, alpha, load_factor, res);
+    }
+    if (!res.finite || !(g0 > 0.0)) return;
+    double g = dx_.head(n_).dot(r_);
+    if (g > 0.0 || std::abs(g) <= 0.8 * g0) return;
+    double a_lo = 0.0, g_lo = g0, a_hi = alpha, g_hi = g;
+    for (int k = 0; k < 6; ++k) {
+      alpha = std::clamp(a_hi - g_hi * (a_hi - a_lo) / (g_hi - g_lo), 0.1 * a_hi, a_hi);
+      take_step(state, alpha, load_factor, res);
+      if (!res.finite) return;
+      g = dx_.head(n_).dot(r_);
+      if (std::abs(g) <= 0.8 * g0) return;
+      if (g > 0.0) {
+        a_lo = alpha;
+        g_lo = g;
+      } else {
+        a_hi = alpha;
+        g_hi = g;
+      }
+    }
   }
 
   const Dae& dae_;

@@ -1,8 +1,8 @@
 // Static equilibrium: Newton-Raphson on the full nonlinear system
 //   Q(q; lambda_load) - C_q^T mu = 0,   C(q) = 0
 // with the exact tangent (kq = 1 in the KKT matrix), incremental load stepping
-// (the load factor scales external loads and gravity), step cutting on failure, and a
-// backtracking line search on the residual norm. The thesis could not compute statics
+// (the load factor scales external loads and gravity), step cutting on failure, and an
+// energy line search (Crisfield 1991, sec. 9.3). The thesis could not compute statics
 // (section 4.2); this is seaflex's.
 #pragma once
 

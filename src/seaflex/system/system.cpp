@@ -112,9 +112,12 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
     if (request.constraints) {
       out.C.segment(r0, c.num_rows()) = ce.C;
       out.gamma.segment(r0, c.num_rows()) = ce.gamma;
-      VecX v_local(static_cast<Index>(dofs.size()));
-      for (std::size_t i = 0; i < dofs.size(); ++i) v_local[i] = state.v[dofs[i]];
-      out.Cdot.segment(r0, c.num_rows()) = ce.Cq * v_local + ce.Ct;
+      // Cdot = C_q v + C_t, gathering v without a temporary (no allocation per step)
+      for (Index r = 0; r < c.num_rows(); ++r) {
+        double cdot = ce.Ct[r];
+        for (std::size_t i = 0; i < dofs.size(); ++i) cdot += ce.Cq(r, i) * state.v[dofs[i]];
+        out.Cdot[r0 + r] = cdot;
+      }
     }
     if (request.matrix) {
       out.kkt.add(cq_block_[k], ce.Cq);
