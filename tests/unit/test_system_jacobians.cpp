@@ -112,3 +112,33 @@ TEST(SystemJacobians, NamesCoordinatesAndRows) {
   EXPECT_EQ(sys->channels().size(), 15u);
   EXPECT_EQ(sys->channels()[4].name, "beam.n1.y");
 }
+
+// attachment points: J = dp/dq against central differences, inside an element (12
+// coordinates, J = S(xi), thesis eq. 3) and at a node (3 coordinates, J = I)
+TEST(SystemJacobians, BeamPointAttachmentJacobian) {
+  auto sys = make_system(ancf_cable::AxialModel::kExact, ancf_cable::BendingModel::kExact);
+  const auto& beam = dynamic_cast<const AncfBeam&>(*sys->find_body("beam"));
+  State s = sys->initial_state();
+  s.q += 0.05 * VecX::Random(s.q.size());
+  for (double arc : {0.0, 1.3, beam.node_arc_length(2), beam.length()}) {
+    const BeamPointAttachment p(beam, arc);
+    const auto dofs = p.coordinates();
+    MatX J(3, dofs.size());
+    p.jacobian(s, J);
+    for (std::size_t j = 0; j < dofs.size(); ++j) {
+      const double h = 1e-6;
+      State sp = s, sm = s;
+      sp.q[dofs[j]] += h;
+      sm.q[dofs[j]] -= h;
+      const Vec3 fd = (p.position(sp) - p.position(sm)) / (2 * h);
+      EXPECT_LT((fd - J.col(j)).norm(), 1e-8) << p.describe() << " column " << j;
+    }
+    // the position moves with no coordinate outside coordinates()
+    State so = s;
+    for (Index i = 0; i < so.q.size(); ++i)
+      if (std::find(dofs.begin(), dofs.end(), i) == dofs.end()) so.q[i] += 1.0;
+    EXPECT_LT((p.position(so) - p.position(s)).norm(), 1e-14) << p.describe();
+  }
+  EXPECT_EQ(BeamPointAttachment(beam, 1.3).coordinates().size(), 12u);
+  EXPECT_EQ(BeamPointAttachment(beam, beam.node_arc_length(2)).describe(), "beam.n2");
+}

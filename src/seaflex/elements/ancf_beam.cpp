@@ -220,8 +220,9 @@ std::vector<Index> BeamPointAttachment::coordinates() const {
 
 Vec3 BeamPointAttachment::position(const State& state) const {
   if (node_ >= 0) return state.q.segment<3>(beam_.node_index(node_));
-  const auto R = ancf_cable::as_nodes(beam_.element_coordinates(state.q, element_));
-  return R * ancf_cable::shape(xi_, beam_.element_length(element_));  // thesis eq. (3)
+  const Vec12 e = beam_.element_coordinates(state.q, element_);  // as_nodes maps, not copies
+  return ancf_cable::as_nodes(e) *
+         ancf_cable::shape(xi_, beam_.element_length(element_));  // eq. (3)
 }
 
 void BeamPointAttachment::jacobian(const State&, Eigen::Ref<MatX> J) const {

@@ -29,10 +29,12 @@ Vec4 shape_dx(double xi, double l);
 /// Second derivatives with respect to x.
 Vec4 shape_dxx(double xi, double l);
 
-/// The 12 coordinates viewed as R = [r0 r0' rl rl'].
+/// The 12 coordinates viewed as R = [r0 r0' rl rl'] (a view: e must outlive it).
 inline Eigen::Map<const Mat34> as_nodes(const Vec12& e) {
   return Eigen::Map<const Mat34>(e.data());
 }
+/// No view of a temporary: it would dangle.
+Eigen::Map<const Mat34> as_nodes(Vec12&& e) = delete;
 
 /// R with r0 subtracted from both position columns: [0, r0', rl - r0, rl']. Strains and
 /// curvatures depend on r' and r'' only, and s1' + s3' = s1'' + s3'' = 0, so every elastic
