@@ -57,7 +57,7 @@ class NewtonStatics {
   // force residual is below the tolerance relative to the largest force term, or when the
   // Newton update is at round-off level (then the residual is at its noise floor, e.g. an
   // unloaded structure whose forces are all round-off), with the constraints satisfied.
-  bool solve(State& state, double load_factor, int& iterations, Residual& res) {
+  bool solve(State& state, double load_factor, bool line_search, int& iterations, Residual& res) {
     failure_.clear();
     const double q_scale = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
     const double c_tol = 1e-10 * q_scale;
@@ -84,7 +84,7 @@ class NewtonStatics {
       start_ = state;
       const double g0 = dx_.head(n_).dot(r_);
       take_step(state, 1.0, load_factor, res);
-      if (s_.line_search) line_search(state, load_factor, g0, res);
+      if (line_search) this->line_search(state, load_factor, g0, res);
       if (res.finite && update <= 1e-13 * q_scale && res.constraint <= c_tol) return true;
     }
     return res.finite && res.force <= s_.tolerance && res.constraint <= c_tol;
@@ -156,7 +156,13 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
     const double target = std::min(1.0, factor + increment);
     const State saved = state;
     int iterations = 0;
-    const bool ok = newton.solve(state, target, iterations, res);
+    // plain Newton first (quadratic convergence); the line search only when that fails,
+    // before the increment is cut: it is a safeguard, and it slows converging problems
+    bool ok = newton.solve(state, target, false, iterations, res);
+    if (!ok && settings.line_search) {
+      state = saved;
+      ok = newton.solve(state, target, true, iterations, res);
+    }
     report.iterations += iterations;
     if (ok) {
       factor = target;

@@ -1,9 +1,9 @@
 // Static equilibrium: Newton-Raphson on the full nonlinear system
 //   Q(q; lambda_load) - C_q^T mu = 0,   C(q) = 0
 // with the exact tangent (kq = 1 in the KKT matrix), incremental load stepping
-// (the load factor scales external loads and gravity), step cutting on failure, and an
-// energy line search (Crisfield 1991, sec. 9.3). The thesis could not compute statics
-// (section 4.2); this is seaflex's.
+// (the load factor scales external loads and gravity), and, when an increment fails,
+// a retry with an energy line search (Crisfield 1991, sec. 9.3) before the increment is
+// halved. The thesis could not compute statics (section 4.2); this is seaflex's.
 #pragma once
 
 #include <functional>
@@ -19,7 +19,7 @@ struct StaticsSettings {
   double tolerance = 1e-8;      ///< residual relative to the largest force term
   double min_increment = 1e-4;  ///< smallest load increment before giving up
   double time = 0.0;            ///< time at which time-varying loads are evaluated
-  bool line_search = true;
+  bool line_search = true;      ///< retry a failed increment with the energy line search
 };
 
 struct StaticsReport {
