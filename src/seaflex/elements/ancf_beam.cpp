@@ -107,7 +107,8 @@ void AncfBeam::assemble(const State& state, AssemblyTarget& target) const {
   for (int el = 0; el < num_elements(); ++el) {
     const Vec12 e = element_coordinates(state.q, el);
     Vec12 Q = Vec12::Zero();
-    Mat12 K = Mat12::Zero();
+    Mat12 K;  // zeroed only when the tangent is asked for (RK4 stages need forces only)
+    if (want_K) K.setZero();
     elasticity(el).add_forces(e, Q, want_K ? &K : nullptr);
     if (target.forces) target.forces->segment<12>(node_index(el)) += Q;
     if (target.matrix) {
