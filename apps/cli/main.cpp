@@ -86,8 +86,11 @@ void print_summary(const io::Model& model) {
   fmt::print("constraints: {} ({} rows)\n", sys.constraints().size(), sys.num_constraints());
   for (const auto& c : sys.constraints()) {
     std::string rows;
-    for (Index r = 0; r < c->num_rows(); ++r)
-      rows += (r ? ", " : "") + c->row_name(r).substr(c->name().size() + 2);
+    for (Index r = 0; r < c->num_rows(); ++r) {
+      // row names read "<constraint>: <label>"; show the label when they do
+      const std::string row = c->row_name(r), prefix = c->name() + ": ";
+      rows += (r ? ", " : "") + (row.starts_with(prefix) ? row.substr(prefix.size()) : row);
+    }
     fmt::print("  {}: {}\n", c->name(), rows);
   }
   fmt::print("forces: {}\n", sys.forces().size());

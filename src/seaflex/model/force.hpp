@@ -26,7 +26,8 @@ class Force {
   /// Adds load_factor * Q and its tangent as the target asks.
   virtual void assemble(const State& state, double load_factor, AssemblyTarget& target) const = 0;
 
-  /// Potential energy when the force is conservative and time independent, else 0.
+  /// Potential energy (J) for forces that define one (gravity). External loads, which
+  /// may vary in time, return 0: their work is not part of System::energies().
   virtual double potential_energy(const State& state) const = 0;
 
  private:
