@@ -25,7 +25,7 @@ std::unique_ptr<System> make_system(ancf_cable::AxialModel axial,
                                  BeamSection::pipe(0.3, 0.25, 2.1e11, 7850), opt)));
   sys->add_force(std::make_unique<Gravity>(Vec3(0, 0, -9.81), std::vector<const Body*>{&beam}));
   sys->add_force(
-      std::make_unique<PointLoad>("tip", std::make_unique<BeamPointAttachment>(beam, 2.7),
+      std::make_unique<PointLoad>("tip", std::make_unique<BeamMarker>(beam, 2.7),
                                   VectorSignal(Vec3(100, 2e3, -5e3), TimeSignal::constant(1))));
   sys->add_force(std::make_unique<DistributedLoad>(
       "wind", beam, 1, 2, VectorSignal(Vec3(0, 50, 0), TimeSignal::constant(1))));
@@ -113,18 +113,19 @@ TEST(SystemJacobians, NamesCoordinatesAndRows) {
   EXPECT_EQ(sys->channels()[4].name, "beam.n1.y");
 }
 
-// attachment points: J = dp/dq against central differences, inside an element (12
-// coordinates, J = S(xi), thesis eq. 3) and at a node (3 coordinates, J = I)
-TEST(SystemJacobians, BeamPointAttachmentJacobian) {
+// beam marker points: J = dp/dq against central differences, inside an element (12
+// coordinates, J = S(xi), thesis eq. 3) and at a node (6 coordinates, J = [I 0])
+TEST(SystemJacobians, BeamMarkerJacobian) {
   auto sys = make_system(ancf_cable::AxialModel::kExact, ancf_cable::BendingModel::kExact);
   const auto& beam = dynamic_cast<const AncfBeam&>(*sys->find_body("beam"));
   State s = sys->initial_state();
   s.q += 0.05 * VecX::Random(s.q.size());
   for (double arc : {0.0, 1.3, beam.node_arc_length(2), beam.length()}) {
-    const BeamPointAttachment p(beam, arc);
+    const BeamMarker p(beam, arc);
     const auto dofs = p.coordinates();
-    MatX J(3, dofs.size());
-    p.jacobian(s, J);
+    MarkerVectorEval e;
+    p.evaluate(MarkerVector::kPoint, s, e);
+    const MatX J = e.J;
     for (std::size_t j = 0; j < dofs.size(); ++j) {
       const double h = 1e-6;
       State sp = s, sm = s;
@@ -139,6 +140,6 @@ TEST(SystemJacobians, BeamPointAttachmentJacobian) {
       if (std::find(dofs.begin(), dofs.end(), i) == dofs.end()) so.q[i] += 1.0;
     EXPECT_LT((p.position(so) - p.position(s)).norm(), 1e-14) << p.describe();
   }
-  EXPECT_EQ(BeamPointAttachment(beam, 1.3).coordinates().size(), 12u);
-  EXPECT_EQ(BeamPointAttachment(beam, beam.node_arc_length(2)).describe(), "beam.n2");
+  EXPECT_EQ(BeamMarker(beam, 1.3).coordinates().size(), 12u);
+  EXPECT_EQ(BeamMarker(beam, beam.node_arc_length(2)).describe(), "beam.n2");
 }

@@ -190,54 +190,59 @@ std::pair<int, double> AncfBeam::locate(double s) const {
   return {num_elements() - 1, 1.0};
 }
 
-BeamPointAttachment::BeamPointAttachment(const AncfBeam& beam, double s) : beam_(beam), s_(s) {
+BeamMarker::BeamMarker(const AncfBeam& beam, double s) : beam_(beam), s_(s) {
   std::tie(element_, xi_) = beam.locate(s);
   const double tol = 1e-12;
   if (xi_ <= tol) node_ = element_;
   if (xi_ >= 1.0 - tol) node_ = element_ + 1;
 }
 
-std::unique_ptr<BeamPointAttachment> BeamPointAttachment::at_node(const AncfBeam& beam, int k) {
+std::unique_ptr<BeamMarker> BeamMarker::at_node(const AncfBeam& beam, int k) {
   if (k < 0 || k >= beam.num_nodes())
     throw std::out_of_range(
         fmt::format("node {} outside beam {} (nodes 0..{})", k, beam.name(), beam.num_nodes() - 1));
-  return std::make_unique<BeamPointAttachment>(beam, beam.node_arc_length(k));
+  return std::make_unique<BeamMarker>(beam, beam.node_arc_length(k));
 }
 
-std::string BeamPointAttachment::describe() const {
+std::string BeamMarker::describe() const {
   if (node_ >= 0) return fmt::format("{}.n{}", beam_.name(), node_);
-  return fmt::format("{}@{}m", beam_.name(), s_);
+  return fmt::format("{}@{:g}m", beam_.name(), s_);
 }
 
-std::vector<Index> BeamPointAttachment::coordinates() const {
+const Body* BeamMarker::body() const {
+  return &beam_;
+}
+
+std::vector<Index> BeamMarker::coordinates() const {
   std::vector<Index> dofs;
-  if (node_ >= 0) {
-    for (int i = 0; i < 3; ++i) dofs.push_back(beam_.node_index(node_) + i);
-  } else {
-    for (int i = 0; i < 12; ++i) dofs.push_back(beam_.node_index(element_) + i);
-  }
+  const int count = node_ >= 0 ? 6 : 12;
+  const Index first = beam_.node_index(node_ >= 0 ? node_ : element_);
+  for (int i = 0; i < count; ++i) dofs.push_back(first + i);
   return dofs;
 }
 
-Vec3 BeamPointAttachment::position(const State& state) const {
-  if (node_ >= 0) return state.q.segment<3>(beam_.node_index(node_));
-  const Vec12 e = beam_.element_coordinates(state.q, element_);  // as_nodes maps, not copies
-  return ancf_cable::as_nodes(e) *
-         ancf_cable::shape(xi_, beam_.element_length(element_));  // eq. (3)
+bool BeamMarker::has(MarkerVector which) const {
+  return which == MarkerVector::kPoint || which == MarkerVector::kAxisZ;
 }
 
-void BeamPointAttachment::jacobian(const State&, Eigen::Ref<MatX> J) const {
+void BeamMarker::evaluate(MarkerVector which, const State& state, MarkerVectorEval& out) const {
+  if (!has(which)) throw std::logic_error("BeamMarker: a beam marker has no x or y axis");
+  const bool slope = which == MarkerVector::kAxisZ;
+  const Index n = node_ >= 0 ? 6 : 12;
+  out.J.setZero(3, n);
+  out.Jv.setZero(3, n);
+  out.bias.setZero();
   if (node_ >= 0) {
-    J = Mat3::Identity();
-    return;
+    out.J.block<3, 3>(0, slope ? 3 : 0).setIdentity();
+  } else {
+    const double l = beam_.element_length(element_);
+    // thesis eq. (3) and its x-derivative
+    const ancf_cable::Vec4 S = slope ? ancf_cable::shape_dx(xi_, l) : ancf_cable::shape(xi_, l);
+    for (int i = 0; i < 4; ++i) out.J.block<3, 3>(0, 3 * i).diagonal().setConstant(S[i]);
   }
-  const ancf_cable::Vec4 s = ancf_cable::shape(xi_, beam_.element_length(element_));
-  J.setZero();
-  for (int i = 0; i < 4; ++i) J.block<3, 3>(0, 3 * i).diagonal().setConstant(s[i]);
-}
-
-void BeamPointAttachment::add_force_jacobian(const State&, const Vec3&, Eigen::Ref<MatX>) const {
-  // r = S(xi) e is linear in e: J^T F does not depend on q
+  const Index first = beam_.node_index(node_ >= 0 ? node_ : element_);
+  out.value = out.J * state.q.segment(first, n);
+  out.rate = out.J * state.v.segment(first, n);
 }
 
 }  // namespace seaflex

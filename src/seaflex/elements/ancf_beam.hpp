@@ -10,8 +10,8 @@
 
 #include "seaflex/elements/ancf_cable.hpp"
 #include "seaflex/elements/ancf_cable_elastic.hpp"
-#include "seaflex/model/attachment.hpp"
 #include "seaflex/model/body.hpp"
+#include "seaflex/model/marker.hpp"
 
 namespace seaflex {
 
@@ -106,20 +106,24 @@ class AncfBeam : public Body {
   std::vector<math::BlockId> blocks_;                 // element -> matrix block
 };
 
-/// A point of an ANCF beam at a reference arc length: r = S(xi) e (thesis eq. 3).
-/// At a node it depends on the node's three position coordinates only.
-class BeamPointAttachment : public Attachment {
+/// A marker on an ANCF beam at a reference arc length: the point r = S(xi) e (thesis
+/// eq. 3) and one axis, kAxisZ = the slope r' = S_x(xi) e (not normalized; its length is
+/// the stretch). Both are linear in e, so the bias and the Hessian vanish. At a node the
+/// marker depends on the node's six coordinates only.
+class BeamMarker : public Marker {
  public:
   /// s: reference arc length from the start node (m), 0 <= s <= beam.length().
-  BeamPointAttachment(const AncfBeam& beam, double s);
+  BeamMarker(const AncfBeam& beam, double s);
   /// Exactly at node k.
-  static std::unique_ptr<BeamPointAttachment> at_node(const AncfBeam& beam, int k);
+  static std::unique_ptr<BeamMarker> at_node(const AncfBeam& beam, int k);
 
   std::string describe() const override;
+  const Body* body() const override;
   std::vector<Index> coordinates() const override;
-  Vec3 position(const State& state) const override;
-  void jacobian(const State& state, Eigen::Ref<MatX> J) const override;
-  void add_force_jacobian(const State& state, const Vec3& F, Eigen::Ref<MatX> dQdq) const override;
+  bool has(MarkerVector which) const override;
+  void evaluate(MarkerVector which, const State& state, MarkerVectorEval& out) const override;
+  void add_hessian(MarkerVector, const State&, const Vec3&, Eigen::Ref<MatX>) const override {}
+  bool linear() const override { return true; }
 
  private:
   const AncfBeam& beam_;

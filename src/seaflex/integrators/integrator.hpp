@@ -21,6 +21,9 @@ class Integrator {
   virtual std::string_view name() const = 0;
   /// Advances state (t, q, v) by h. Must not allocate after the first call.
   virtual StepReport step(const Dae& dae, State& state, double h) = 0;
+  /// Sets state.lambda to the multipliers consistent with (t, q, v) (thesis eq. 132), for
+  /// reaction outputs; called by the Simulation before it records a row.
+  virtual void update_multipliers(const Dae& dae, State& state) = 0;
 };
 
 }  // namespace seaflex

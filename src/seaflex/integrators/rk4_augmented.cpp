@@ -58,6 +58,11 @@ void Rk4Augmented::accelerations(const Dae& dae, const State& state, VecX& a, Ve
   lambda = sol_.tail(m_);
 }
 
+void Rk4Augmented::update_multipliers(const Dae& dae, State& state) {
+  if (!prepared_) prepare(dae);
+  accelerations(dae, state, k1v_, state.lambda);
+}
+
 bool Rk4Augmented::project(const Dae& dae, State& state, double& violation) {
   DaeRequest req;
   req.forces = false;

@@ -23,6 +23,7 @@ class Rk4Augmented : public Integrator {
 
   std::string_view name() const override { return "rk4"; }
   StepReport step(const Dae& dae, State& state, double h) override;
+  void update_multipliers(const Dae& dae, State& state) override;
 
   /// Accelerations and multipliers at a state (one augmented solve); used for stages
   /// and for outputs that need lambda.

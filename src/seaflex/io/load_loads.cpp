@@ -77,16 +77,16 @@ std::optional<VectorSignal> read_vector_signal(MapReader& r, const std::string& 
 std::unique_ptr<Force> build_point_force(MapReader& r, const std::string& name, LoadContext& ctx) {
   const AncfBeam* beam = ctx.beam_ref(r, "body");
   const bool at_node = r.has("node"), at_s = r.has("arc_length");
-  std::unique_ptr<Attachment> point;
+  std::unique_ptr<Marker> point;
   if (at_node && at_s) {
     r.error("arc_length", "give either node or arc_length, not both");
   } else if (beam && at_s) {
     if (const auto s =
             r.number("arc_length", Need::kRequired, NumberRule::range(0.0, beam->length(), "m")))
-      point = std::make_unique<BeamPointAttachment>(*beam, *s);
+      point = std::make_unique<BeamMarker>(*beam, *s);
   } else if (beam) {
     if (const auto k = ctx.node_ref(r, "node", *beam, Need::kRequired))
-      point = BeamPointAttachment::at_node(*beam, *k);
+      point = BeamMarker::at_node(*beam, *k);
   }
   auto force = read_vector_signal(r, "force", "N");
   if (!point || !force) return nullptr;

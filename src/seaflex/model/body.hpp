@@ -3,11 +3,14 @@
 // output channels. New body kinds (rigid body, ANCF plate) derive from this class.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "seaflex/model/assembly.hpp"
 #include "seaflex/model/channel.hpp"
+#include "seaflex/model/constraint.hpp"
 #include "seaflex/model/state.hpp"
 
 namespace seaflex {
@@ -55,6 +58,10 @@ class Body {
 
   /// Appends this body's output channels.
   virtual void add_channels(ChannelList& channels) const = 0;
+
+  /// Constraints that belong to the body's parametrization (the Euler-parameter
+  /// normalization of a rigid body); the System adds them with the body.
+  virtual std::vector<std::unique_ptr<Constraint>> internal_constraints() const { return {}; }
 
  private:
   std::string name_;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "seaflex/model/channel.hpp"
 #include "seaflex/model/state.hpp"
 
 namespace seaflex {
@@ -42,6 +43,10 @@ class Constraint {
 
   /// Name of a row for messages, e.g. "support beam.n0: x".
   virtual std::string row_name(Index row) const = 0;
+
+  /// Appends output channels (reactions from the multipliers state.lambda, whose rows
+  /// for this constraint start at row_offset); none by default.
+  virtual void add_channels(ChannelList& /*channels*/, Index /*row_offset*/) const {}
 
  private:
   std::string name_;

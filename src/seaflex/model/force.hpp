@@ -7,6 +7,7 @@
 #include <string>
 
 #include "seaflex/model/assembly.hpp"
+#include "seaflex/model/channel.hpp"
 #include "seaflex/model/state.hpp"
 
 namespace seaflex {
@@ -23,12 +24,16 @@ class Force {
   /// Called once after coordinates are numbered: declare matrix blocks (may be none).
   virtual void declare_blocks(math::SparseBlockAssembler& matrix) = 0;
 
-  /// Adds load_factor * Q and its tangent as the target asks.
+  /// Adds Q and its tangent as the target asks; external loads scale with load_factor,
+  /// internal force elements (springs) do not.
   virtual void assemble(const State& state, double load_factor, AssemblyTarget& target) const = 0;
 
-  /// Potential energy (J) for forces that define one (gravity). External loads, which
-  /// may vary in time, return 0: their work is not part of System::energies().
+  /// Potential energy (J) for forces that define one (gravity, springs). External loads,
+  /// which may vary in time, return 0: their work is not part of System::energies().
   virtual double potential_energy(const State& state) const = 0;
+
+  /// Appends output channels (tension, angle); none by default.
+  virtual void add_channels(ChannelList& /*channels*/) const {}
 
  private:
   std::string name_;

@@ -29,7 +29,8 @@ Simulation::Simulation(const Dae& dae, ChannelList channels, Integrator& integra
   row_.resize(channels_.size());
 }
 
-void Simulation::record(const State& state) {
+void Simulation::record(State& state) {
+  if (dae_.num_constraints() > 0) integrator_.update_multipliers(dae_, state);  // reactions
   for (std::size_t i = 0; i < channels_.size(); ++i) row_[i] = channels_[i].value(state);
   for (Recorder* r : recorders_) r->record(state.t, row_);
   ++rows_;

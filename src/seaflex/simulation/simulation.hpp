@@ -44,7 +44,7 @@ class Simulation {
   long steps_per_output() const { return every_; }
 
  private:
-  void record(const State& state);
+  void record(State& state);
 
   const Dae& dae_;
   ChannelList channels_;

@@ -11,6 +11,7 @@ Body& System::add_body(std::unique_ptr<Body> body) {
   if (find_body(body->name()))
     throw std::invalid_argument("System: duplicate body " + body->name());
   bodies_.push_back(std::move(body));
+  for (auto& c : bodies_.back()->internal_constraints()) constraints_.push_back(std::move(c));
   return *bodies_.back();
 }
 
@@ -147,6 +148,13 @@ std::string System::coordinate_name(Index i) const {
   return fmt::format("q[{}]", i);
 }
 
+const Constraint* System::constraint_at_row(Index row) const {
+  for (std::size_t k = 0; k < constraints_.size(); ++k)
+    if (row >= row_offset_[k] && row < row_offset_[k] + constraints_[k]->num_rows())
+      return constraints_[k].get();
+  return nullptr;
+}
+
 std::string System::constraint_name(Index row) const {
   for (std::size_t k = 0; k < constraints_.size(); ++k)
     if (row >= row_offset_[k] && row < row_offset_[k] + constraints_[k]->num_rows())
@@ -167,6 +175,9 @@ Energies System::energies(const State& state) const {
 ChannelList System::channels() const {
   ChannelList list;
   for (const auto& b : bodies_) b->add_channels(list);
+  for (const auto& f : forces_) f->add_channels(list);
+  for (std::size_t k = 0; k < constraints_.size(); ++k)
+    constraints_[k]->add_channels(list, row_offset_[k]);
   return list;
 }
 

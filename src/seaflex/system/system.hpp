@@ -54,6 +54,8 @@ class System : public Dae {
   bool constant_mass_kkt() const override;
   std::string coordinate_name(Index i) const override;
   std::string constraint_name(Index row) const override;
+  /// The constraint that owns a row of the multiplier vector; nullptr when out of range.
+  const Constraint* constraint_at_row(Index row) const;
 
  private:
   std::vector<std::unique_ptr<Body>> bodies_;

@@ -1,0 +1,138 @@
+#include "seaflex/forces/spring_damper.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace seaflex {
+
+SpringLaw SpringLaw::linear(double stiffness) {
+  SpringLaw law;
+  law.k_ = stiffness;
+  return law;
+}
+
+SpringLaw SpringLaw::table(std::vector<double> extensions, std::vector<double> tensions) {
+  if (extensions.size() < 2 || extensions.size() != tensions.size())
+    throw std::invalid_argument("SpringLaw: a table needs two or more (extension, tension) pairs");
+  for (std::size_t i = 1; i < extensions.size(); ++i)
+    if (!(extensions[i] > extensions[i - 1]))
+      throw std::invalid_argument("SpringLaw: extensions must increase strictly");
+  SpringLaw law;
+  law.x_ = std::move(extensions);
+  law.t_ = std::move(tensions);
+  return law;
+}
+
+int SpringLaw::segment(double x) const {
+  const int n = static_cast<int>(x_.size());
+  int i = 0;
+  while (i < n - 2 && x > x_[i + 1]) ++i;
+  return i;  // the first or last segment also extends the table beyond its ends
+}
+
+double SpringLaw::tension(double x) const {
+  if (x_.empty()) return k_ * x;
+  const int i = segment(x);
+  return t_[i] + stiffness(x) * (x - x_[i]);
+}
+
+double SpringLaw::stiffness(double x) const {
+  if (x_.empty()) return k_;
+  const int i = segment(x);
+  return (t_[i + 1] - t_[i]) / (x_[i + 1] - x_[i]);
+}
+
+double SpringLaw::energy(double x) const {
+  if (x_.empty()) return 0.5 * k_ * x * x;
+  // T is linear between breakpoints (and beyond the ends): trapezoids over the
+  // breakpoints between 0 and x integrate it exactly
+  const double lo = std::min(0.0, x), hi = std::max(0.0, x);
+  std::vector<double> pts{lo};
+  for (double b : x_)
+    if (b > lo && b < hi) pts.push_back(b);
+  pts.push_back(hi);
+  double e = 0.0;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    e += 0.5 * (tension(pts[i - 1]) + tension(pts[i])) * (pts[i] - pts[i - 1]);
+  return x >= 0.0 ? e : -e;
+}
+
+SpringDamper::SpringDamper(std::string name, std::unique_ptr<Marker> a, std::unique_ptr<Marker> b,
+                           double free_length, SpringLaw law, double damping, bool slack)
+    : Force(std::move(name)),
+      pair_(std::move(a), std::move(b)),
+      free_length_(free_length),
+      law_(std::move(law)),
+      damping_(damping),
+      slack_(slack) {}
+
+void SpringDamper::declare_blocks(math::SparseBlockAssembler& matrix) {
+  const auto& dofs = pair_.bind();
+  block_ = dofs.empty() ? -1 : matrix.declare_block(dofs, dofs);
+}
+
+double SpringDamper::length(const State& state) const {
+  return (pair_.b().position(state) - pair_.a().position(state)).norm();
+}
+
+double SpringDamper::tension(const State& state) const {
+  PairVectorEval d;
+  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
+  const double L = d.value.norm();
+  if (slack_ && L < free_length_) return 0.0;
+  const double Ld = L > 0.0 ? d.value.dot(d.rate) / L : 0.0;
+  return law_.tension(L - free_length_) + damping_ * Ld;
+}
+
+void SpringDamper::assemble(const State& state, double, AssemblyTarget& target) const {
+  const auto& dofs = pair_.dofs();
+  if (dofs.empty()) return;
+  PairVectorEval d;
+  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
+  const double L = d.value.norm();
+  if (!(L > 0.0))
+    throw std::domain_error(fmt::format(
+        "spring {}: its end points coincide, so the line of action is undefined", name()));
+  if (slack_ && L < free_length_) return;
+  const Vec3 n = d.value / L;
+  const double Ld = n.dot(d.rate);
+  const double T = law_.tension(L - free_length_) + damping_ * Ld;
+  const Vec3 f = T * n;  // force on a; -f on b: Q = -J_d^T f
+  const Index m = static_cast<Index>(dofs.size());
+  if (target.forces)
+    for (Index i = 0; i < m; ++i) (*target.forces)[dofs[i]] -= d.J.col(i).dot(f);
+  if (!target.matrix) return;
+  const MatrixScales& k = target.scales;
+  PairSquare A = PairSquare::Zero(m, m);
+  if (k.kq != 0.0) {
+    const Mat3 P = Mat3::Identity() - n * n.transpose();
+    // df/dd with d' held; L' = n . d' depends on d through n
+    const Mat3 dfdd = law_.stiffness(L - free_length_) * n * n.transpose() + (T / L) * P +
+                      damping_ * n * (P * d.rate).transpose() / L;
+    const Mat3 dfdrate = damping_ * n * n.transpose();
+    // dQ/dq = -(J^T df/dd J + d(J^T f)/dq + J^T df/dd' d(d')/dq)
+    PairSquare dQ = -(d.J.transpose() * dfdd * d.J + d.J.transpose() * dfdrate * d.Jv);
+    pair_.add_hessian(MarkerVector::kPoint, -1.0, 1.0, state, -f, dQ);
+    A -= k.kq * dQ;
+  }
+  if (k.kv != 0.0 && damping_ != 0.0)
+    A += k.kv * damping_ * d.J.transpose() * n * n.transpose() * d.J;  // -kv dQ/dv
+  target.matrix->add(block_, A);
+}
+
+double SpringDamper::potential_energy(const State& state) const {
+  const double x = length(state) - free_length_;
+  if (slack_ && x < 0.0) return 0.0;
+  return law_.energy(x);
+}
+
+void SpringDamper::add_channels(ChannelList& channels) const {
+  channels.push_back(
+      {fmt::format("{}.tension", name()), [this](const State& s) { return tension(s); }});
+  channels.push_back(
+      {fmt::format("{}.length", name()), [this](const State& s) { return length(s); }});
+}
+
+}  // namespace seaflex
