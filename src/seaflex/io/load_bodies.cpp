@@ -1,6 +1,10 @@
 // bodies: a mapping of body names to bodies, each with a "type" from the registry.
 #include <fmt/format.h>
 
+#include <cmath>
+#include <numbers>
+
+#include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/io/load_context.hpp"
 
 namespace seaflex::io {
@@ -173,11 +177,91 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
   return std::make_unique<AncfBeam>(name, std::move(*geometry), section, options);
 }
 
+// inertia: [Ixx, Iyy, Izz] (principal) or the full symmetric 3x3 tensor, about the centre of
+// gravity in body axes; must be a physical inertia (positive definite, triangle inequality)
+std::optional<Mat3> read_inertia(MapReader& r) {
+  const YAML::Node n =
+      r.get("inertia", Need::kRequired,
+            "[Ixx, Iyy, Izz] or [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]]");
+  if (!n.IsDefined()) return std::nullopt;
+  const std::string hint =
+      "expected [Ixx, Iyy, Izz] or the 3x3 tensor [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], "
+      "[Ixz, Iyz, Izz]] in kg m^2";
+  Mat3 I = Mat3::Zero();
+  if (n.IsSequence() && n.size() == 3 && n[0].IsScalar()) {
+    const auto d = read_vec3(r.diagnostics(), n, r.key_path("inertia"), "kg m^2");
+    if (!d) return std::nullopt;
+    I.diagonal() = *d;
+  } else if (n.IsSequence() && n.size() == 3) {
+    for (int i = 0; i < 3; ++i) {
+      const auto row = read_vec3(r.diagnostics(), n[i],
+                                 fmt::format("{}[{}]", r.key_path("inertia"), i), "kg m^2");
+      if (!row) return std::nullopt;
+      I.row(i) = row->transpose();
+    }
+    const double scale = I.cwiseAbs().maxCoeff();
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j)
+        if (std::abs(I(i, j) - I(j, i)) > 1e-9 * scale) {
+          r.error("inertia", fmt::format("the inertia tensor must be symmetric: entry [{}][{}] = "
+                                         "{:g} but [{}][{}] = {:g}",
+                                         i, j, I(i, j), j, i, I(j, i)));
+          return std::nullopt;
+        }
+  } else {
+    r.error("inertia", fmt::format("{}, got {}", hint, describe(n)));
+    return std::nullopt;
+  }
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(I);
+  const Vec3 p = eig.eigenvalues();
+  if (!(p[0] > 0.0)) {
+    r.error("inertia", fmt::format("the inertia tensor is not positive definite (principal "
+                                   "moments {:.6g}, {:.6g}, {:.6g} kg m^2)",
+                                   p[0], p[1], p[2]));
+    return std::nullopt;
+  }
+  if (p[0] + p[1] < p[2] * (1.0 - 1e-9)) {
+    r.error("inertia", fmt::format("principal moments {:.6g}, {:.6g}, {:.6g} kg m^2 violate the "
+                                   "triangle inequality I1 + I2 >= I3 that every real body meets",
+                                   p[0], p[1], p[2]));
+    return std::nullopt;
+  }
+  return I;
+}
+
+std::unique_ptr<Body> build_rigid_body(MapReader& r, const std::string& name, LoadContext&) {
+  const auto mass = r.number("mass", Need::kRequired, NumberRule::positive("kg"));
+  const auto inertia = read_inertia(r);
+  const auto position = r.vec3("position", Need::kRequired, "m");
+  RigidBodyInitial init;
+  bool ok = true;
+  if (const auto o = read_orientation(r, false))
+    init.orientation = *o;
+  else
+    ok = false;
+  if (r.has("velocity")) {
+    if (const auto v = r.vec3("velocity", Need::kRequired, "m/s"))
+      init.velocity = *v;
+    else
+      ok = false;
+  }
+  if (r.has("angular_velocity")) {
+    if (const auto w = r.vec3("angular_velocity", Need::kRequired, "deg/s"))
+      init.angular_velocity = *w * (std::numbers::pi / 180.0);
+    else
+      ok = false;
+  }
+  if (!mass || !inertia || !position || !ok) return nullptr;
+  init.position = *position;
+  return std::make_unique<RigidBody>(name, *mass, *inertia, init);
+}
+
 }  // namespace
 
 const std::map<std::string, BodyBuilder>& body_builders() {
   static const std::map<std::string, BodyBuilder> builders{
       {"ancf_beam", build_ancf_beam},
+      {"rigid_body", build_rigid_body},
   };
   return builders;
 }
@@ -190,6 +274,12 @@ void load_bodies(const YAML::Node& node, LoadContext& ctx) {
     const std::string name = kv.first.Scalar();
     bodies.has(name);  // every entry is a body: no unknown keys at this level
     const std::string path = "bodies." + name;
+    if (name == kGroundName) {
+      ctx.diag.error(kv.first.Mark(), path,
+                     "'ground' is reserved for the fixed world frame; give the body another name");
+      ctx.failed_bodies.push_back(name);
+      continue;
+    }
     if (name.empty() || name.find_first_not_of(
                             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
                             std::string::npos) {

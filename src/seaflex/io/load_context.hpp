@@ -15,6 +15,9 @@
 
 namespace seaflex::io {
 
+/// The reserved body name of the fixed world frame in marker references.
+inline constexpr std::string_view kGroundName = "ground";
+
 struct LoadContext {
   Diagnostics& diag;
   System& system;
@@ -22,6 +25,19 @@ struct LoadContext {
   /// bodies that were named but could not be built: references to them are not
   /// reported again
   std::vector<std::string> failed_bodies;
+  /// named markers (markers section) that were read without error, and those with errors
+  std::map<std::string, YAML::Node> markers;
+  std::vector<std::string> failed_markers;
+  /// where each constraint was defined (name -> mark, key path), for the model check
+  std::map<std::string, std::pair<YAML::Mark, std::string>> constraint_origin;
+
+  /// Reads the body name at key: a body of the model, or ground (nullptr with *ground set)
+  /// when allow_ground. Reports a dangling reference with a suggestion.
+  const Body* body_ref(MapReader& reader, std::string_view key, bool allow_ground, bool* ground);
+  /// A marker from a reference at path: the name of a marker of the markers section, or an
+  /// inline mapping {body, node | arc_length | position, orientation | axis | euler_zxz}.
+  /// nullptr after reporting the problem.
+  std::unique_ptr<Marker> marker(const YAML::Node& node, const std::string& path);
 
   /// Reads the body name at key and returns the body when it exists and is an ANCF beam;
   /// reports a dangling reference (with a suggestion) or a wrong kind otherwise.
@@ -45,7 +61,15 @@ const std::map<std::string, ForceBuilder>& load_builders();
 /// dynamics "integrator" -> builder (load_analysis.cpp)
 const std::map<std::string, IntegratorBuilder>& integrator_builders();
 
+/// A frame (columns = axes) from `orientation` [roll, pitch, yaw] (deg), `euler_zxz`
+/// [phi, theta, psi] (deg, thesis eq. 136) or, when allow_axis, `axis` [x, y, z] (the z
+/// axis; x and y completed); identity when none is given, nullopt after an error.
+std::optional<Mat3> read_orientation(MapReader& reader, bool allow_axis);
+
 void load_bodies(const YAML::Node& node, LoadContext& ctx);
+void load_markers(const YAML::Node& node, LoadContext& ctx);
+void load_joints(const YAML::Node& node, LoadContext& ctx);
+void load_connections(const YAML::Node& node, LoadContext& ctx);
 void load_supports(const YAML::Node& node, LoadContext& ctx);
 void load_loads(const YAML::Node& node, LoadContext& ctx);
 void load_statics(const YAML::Node& node, LoadContext& ctx);

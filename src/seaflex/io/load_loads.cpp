@@ -74,23 +74,39 @@ std::optional<VectorSignal> read_vector_signal(MapReader& r, const std::string& 
   return VectorSignal(*value, std::move(signal));
 }
 
+// at a beam node or arc length (body + node | arc_length), or at any marker (at: a marker
+// name or an inline marker); a force and/or a moment, both in world axes
 std::unique_ptr<Force> build_point_force(MapReader& r, const std::string& name, LoadContext& ctx) {
-  const AncfBeam* beam = ctx.beam_ref(r, "body");
-  const bool at_node = r.has("node"), at_s = r.has("arc_length");
   std::unique_ptr<Marker> point;
-  if (at_node && at_s) {
-    r.error("arc_length", "give either node or arc_length, not both");
-  } else if (beam && at_s) {
-    if (const auto s =
-            r.number("arc_length", Need::kRequired, NumberRule::range(0.0, beam->length(), "m")))
-      point = std::make_unique<BeamMarker>(*beam, *s);
-  } else if (beam) {
-    if (const auto k = ctx.node_ref(r, "node", *beam, Need::kRequired))
-      point = BeamMarker::at_node(*beam, *k);
+  if (r.has("at")) {
+    for (const char* k : {"body", "node", "arc_length"})
+      if (r.has(k)) r.error(k, "give the point either by at or by body and node/arc_length");
+    point = ctx.marker(r.get("at"), r.key_path("at"));
+  } else {
+    const AncfBeam* beam = ctx.beam_ref(r, "body");
+    const bool at_node = r.has("node"), at_s = r.has("arc_length");
+    if (at_node && at_s) {
+      r.error("arc_length", "give either node or arc_length, not both");
+    } else if (beam && at_s) {
+      if (const auto s =
+              r.number("arc_length", Need::kRequired, NumberRule::range(0.0, beam->length(), "m")))
+        point = std::make_unique<BeamMarker>(*beam, *s);
+    } else if (beam) {
+      if (const auto k = ctx.node_ref(r, "node", *beam, Need::kRequired))
+        point = BeamMarker::at_node(*beam, *k);
+    }
   }
-  auto force = read_vector_signal(r, "force", "N");
+  const bool has_moment = r.has("moment") || r.has("moment_table");
+  const bool has_force = r.has("force") || r.has("force_table");
+  std::optional<VectorSignal> force = VectorSignal(Vec3::Zero(), TimeSignal::constant(1.0));
+  if (has_force || !has_moment) force = read_vector_signal(r, "force", "N");
+  std::optional<VectorSignal> moment;
+  if (has_moment) {
+    moment = read_vector_signal(r, "moment", "N m");
+    if (!moment) return nullptr;
+  }
   if (!point || !force) return nullptr;
-  return std::make_unique<PointLoad>(name, std::move(point), std::move(*force));
+  return std::make_unique<PointLoad>(name, std::move(point), std::move(*force), std::move(moment));
 }
 
 std::unique_ptr<Force> build_distributed_load(MapReader& r, const std::string& name,

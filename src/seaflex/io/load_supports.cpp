@@ -87,8 +87,10 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
                                   "be held only once",
                                   beam->name(), *k, fmt::join(twice, ", ")));
     if (locals.empty()) continue;
-    ctx.system.add_constraint(std::make_unique<CoordinateLock>(
-        fmt::format("support {}.n{}", beam->name(), *k), *beam, locals, values, labels));
+    const std::string cname = fmt::format("support {}.n{}", beam->name(), *k);
+    ctx.constraint_origin[cname] = {node[i].Mark(), path};
+    ctx.system.add_constraint(
+        std::make_unique<CoordinateLock>(cname, *beam, locals, values, labels));
   }
 }
 

@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <fstream>
+#include <set>
 #include <sstream>
 
+#include "seaflex/constraints/joint.hpp"
 #include "seaflex/forces/gravity.hpp"
 #include "seaflex/io/load_context.hpp"
+#include "seaflex/solvers/constraint_audit.hpp"
 
 namespace seaflex::io {
 
@@ -58,12 +61,68 @@ std::optional<int> LoadContext::node_ref(MapReader& reader, std::string_view key
 
 namespace {
 
+// The model check of constraints at the initial state: redundant rows (over-constrained
+// assemblies) and rows not satisfied (markers that do not meet), reported by constraint
+// name at the line that defines it.
+void check_constraints(LoadContext& ctx) {
+  const System& sys = ctx.system;
+  const State s0 = sys.initial_state();
+  const ConstraintAudit audit = audit_constraints(sys, s0);
+  auto origin = [&](const Constraint* c) -> std::pair<YAML::Mark, std::string> {
+    if (const auto it = ctx.constraint_origin.find(c->name()); it != ctx.constraint_origin.end())
+      return it->second;
+    return {YAML::Mark::null_mark(), ""};
+  };
+  auto label = [&](Index row) {
+    const std::string full = sys.constraint_name(row);
+    const auto colon = full.find(": ");
+    return colon == std::string::npos ? full : full.substr(colon + 2);
+  };
+  std::set<const Constraint*> reported;
+  for (const RedundantRow& red : audit.redundant) {
+    const Constraint* c = sys.constraint_at_row(red.row);
+    if (!reported.insert(c).second) continue;
+    std::vector<std::string> others;
+    for (Index r : red.depends_on) {
+      const Constraint* o = sys.constraint_at_row(r);
+      const std::string n = fmt::format("'{}'", o->name());
+      if (o != c && std::find(others.begin(), others.end(), n) == others.end()) others.push_back(n);
+    }
+    const auto [mark, path] = origin(c);
+    ctx.diag.error(
+        mark, path,
+        fmt::format("'{}' over-constrains the assembly: its condition '{}' repeats what {} "
+                    "already impose{}; remove it or use a joint with fewer conditions (a closed "
+                    "loop of parallel revolute joints needs, e.g., a ball or universal joint)",
+                    c->name(), label(red.row),
+                    others.empty() ? std::string("earlier constraints")
+                                   : fmt::format("{}", fmt::join(others, ", ")),
+                    others.size() == 1 ? "s" : ""));
+  }
+  for (const ViolatedRow& v : audit.violated) {
+    const Constraint* c = sys.constraint_at_row(v.row);
+    if (!reported.insert(c).second) continue;
+    std::string detail;
+    if (const auto* j = dynamic_cast<const Joint*>(c)) {
+      const Vec3 a = j->from().position(s0), b = j->to().position(s0);
+      detail = fmt::format(
+          " ({} is at ({:.6g}, {:.6g}, {:.6g}) m, {} at ({:.6g}, {:.6g}, {:.6g}) m)",
+          j->from().describe(), a.x(), a.y(), a.z(), j->to().describe(), b.x(), b.y(), b.z());
+    }
+    const auto [mark, path] = origin(c);
+    ctx.diag.error(mark, path,
+                   fmt::format("'{}' is not satisfied by the initial positions: condition '{}' is "
+                               "off by {:.6g}{}; place the bodies so that the joint closes",
+                               c->name(), label(v.row), std::abs(v.value), detail));
+  }
+}
+
 Model load(const YAML::Node& root, const std::string& name) {
   Diagnostics diag(name);
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();
@@ -86,7 +145,10 @@ Model load(const YAML::Node& root, const std::string& name) {
 
   const YAML::Node bodies = top.get("bodies", Need::kRequired, "a mapping of body names to bodies");
   if (bodies.IsDefined()) load_bodies(bodies, ctx);
+  if (const YAML::Node n = top.get("markers"); n.IsDefined()) load_markers(n, ctx);
   if (const YAML::Node n = top.get("supports"); n.IsDefined()) load_supports(n, ctx);
+  if (const YAML::Node n = top.get("joints"); n.IsDefined()) load_joints(n, ctx);
+  if (const YAML::Node n = top.get("connections"); n.IsDefined()) load_connections(n, ctx);
   if (const YAML::Node n = top.get("loads"); n.IsDefined()) load_loads(n, ctx);
   if (model.gravity.norm() > 0.0) {
     std::vector<const Body*> all;
@@ -98,6 +160,8 @@ Model load(const YAML::Node& root, const std::string& name) {
   top.finish();
   diag.throw_if_any();
   model.system->finalize();
+  check_constraints(ctx);
+  diag.throw_if_any();
   return model;
 }
 

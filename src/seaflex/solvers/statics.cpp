@@ -65,7 +65,17 @@ class NewtonStatics {
     for (int it = 0; it < s_.max_iterations; ++it) {
       if (!res.finite) return false;
       if (res.force <= s_.tolerance && res.constraint <= c_tol) return true;
-      if (!solver_.factorize(eval_.kkt.matrix())) {
+      if (regularized_) regularize();
+      if (!solver_.factorize(eval_.kkt.matrix()) && !regularized_) {
+        // a mode without stiffness (a free spin about a hanging line, a rigid body about a
+        // beam's axis, which carries no torsion): Levenberg-Marquardt-style, add a small
+        // stiffness to the Newton matrix only; the residual, hence the equilibrium, is
+        // unchanged, and the free mode, which no force drives, does not move
+        regularized_ = true;
+        regularize();
+        solver_.factorize(eval_.kkt.matrix());
+      }
+      if (!solver_.factorized()) {
         failure_ = fmt::format(
             "the tangent matrix is singular ({}): a mechanism, a body without "
             "supports, or coordinates without stiffness",
@@ -89,6 +99,21 @@ class NewtonStatics {
     }
     return res.finite && res.force <= s_.tolerance && res.constraint <= c_tol;
   }
+
+  // K += eps I on the coordinate block, eps = 1e-10 of its largest diagonal entry
+  void regularize() {
+    SpMat& K = eval_.kkt.matrix();
+    double largest = 0.0;
+    for (Index c = 0; c < n_; ++c)
+      for (SpMat::InnerIterator it(K, c); it; ++it)
+        if (it.row() == c) largest = std::max(largest, std::abs(it.value()));
+    const double eps = 1e-10 * std::max(largest, 1.0);
+    for (Index c = 0; c < n_; ++c)
+      for (SpMat::InnerIterator it(K, c); it; ++it)
+        if (it.row() == c) it.valueRef() += eps;
+  }
+
+  bool regularized() const { return regularized_; }
 
   void take_step(State& state, double alpha, double load_factor, Residual& res) {
     state.q = start_.q + alpha * dx_.head(n_);
@@ -137,6 +162,7 @@ class NewtonStatics {
   VecX r_, rhs_, dx_;
   State start_;
   std::string failure_;  // why the last solve failed, when it was not plain non-convergence
+  bool regularized_ = false;
 };
 
 }  // namespace
@@ -169,6 +195,7 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
       ++report.increments;
       report.residual = res.force;
       report.constraint_violation = res.constraint;
+      report.regularized = newton.regularized();
       if (progress) progress(factor, iterations, res.force);
       continue;
     }

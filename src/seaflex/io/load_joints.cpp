@@ -1,0 +1,190 @@
+// joints: constraints between two markers (ball, universal, revolute, cylindrical,
+// prismatic, fixed, and flex = ball + rotational spring-damper);
+// connections: force elements between two markers (spring).
+#include <fmt/format.h>
+
+#include <numbers>
+#include <set>
+
+#include "seaflex/constraints/joint.hpp"
+#include "seaflex/forces/rotational_spring.hpp"
+#include "seaflex/forces/spring_damper.hpp"
+#include "seaflex/io/load_context.hpp"
+
+namespace seaflex::io {
+
+namespace {
+
+// flex joint stiffness as riser flex joints are specified: kN m/deg -> N m/rad
+constexpr double kKnmPerDeg = 1000.0 * 180.0 / std::numbers::pi;
+
+const std::vector<std::string> kJointTypes{"ball",      "universal", "revolute", "cylindrical",
+                                           "prismatic", "fixed",     "flex"};
+
+JointType joint_type(const std::string& t) {
+  if (t == "universal") return JointType::kUniversal;
+  if (t == "revolute") return JointType::kRevolute;
+  if (t == "cylindrical") return JointType::kCylindrical;
+  if (t == "prismatic") return JointType::kPrismatic;
+  if (t == "fixed") return JointType::kFixed;
+  return JointType::kBall;  // ball and flex
+}
+
+bool valid_name(const std::string& s) {
+  return !s.empty() &&
+         s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") ==
+             std::string::npos;
+}
+
+// name, from and to of a joint or connection entry
+struct PairEntry {
+  std::string name;
+  YAML::Node from, to;
+};
+
+std::optional<PairEntry> read_pair(MapReader& r, std::set<std::string>& names, const char* what) {
+  PairEntry e;
+  const auto name = r.text("name", Need::kRequired);
+  e.from = r.get("from", Need::kRequired, "a marker name or {body: ..., ...}");
+  e.to = r.get("to", Need::kRequired, "a marker name or {body: ..., ...}");
+  if (!name) return std::nullopt;
+  if (!valid_name(*name)) {
+    r.error("name", fmt::format("{} names may use letters, digits, '_' and '-' only (they become "
+                                "output channel names such as <name>.fx)",
+                                what));
+    return std::nullopt;
+  }
+  if (!names.insert(*name).second) {
+    r.error("name", fmt::format("a second {} named '{}': names must be unique", what, *name));
+    return std::nullopt;
+  }
+  e.name = *name;
+  return e;
+}
+
+std::optional<bool> read_bool(MapReader& r, std::string_view key) {
+  const YAML::Node n = r.get(key);
+  if (!n.IsDefined()) return false;
+  bool value = false;
+  if (n.IsScalar() && YAML::convert<bool>::decode(n, value)) return value;
+  r.error(key, fmt::format("expected true or false, got {}", describe(n)));
+  return std::nullopt;
+}
+
+}  // namespace
+
+void load_joints(const YAML::Node& node, LoadContext& ctx) {
+  if (!node.IsSequence()) {
+    ctx.diag.error(node.Mark(), "joints",
+                   fmt::format("expected a list of joints, got {}", describe(node)));
+    return;
+  }
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = fmt::format("joints[{}]", i);
+    MapReader r(ctx.diag, node[i], path);
+    if (!r.valid()) continue;
+    const auto entry = read_pair(r, names, "joint");
+    const auto type = r.choice("type", Need::kRequired, kJointTypes);
+    std::optional<double> stiffness = 0.0, damping = 0.0;
+    if (type == "flex") {
+      stiffness = r.number("stiffness", Need::kRequired, NumberRule::nonnegative("kN m/deg"));
+      if (r.has("damping"))
+        damping = r.number("damping", Need::kRequired, NumberRule::nonnegative("kN m s/deg"));
+    } else if (type) {
+      for (const char* k : {"stiffness", "damping"})
+        if (r.has(k))
+          r.error(k, fmt::format("only a flex joint takes {}; a {} joint is rigid", k, *type));
+    }
+    std::unique_ptr<Marker> from, to;
+    if (entry) {
+      from = ctx.marker(entry->from, r.key_path("from"));
+      to = ctx.marker(entry->to, r.key_path("to"));
+    }
+    r.finish();
+    if (!entry || !type || !from || !to || !stiffness || !damping) continue;
+    if (from->body() != nullptr && from->body() == to->body()) {
+      r.error("to", fmt::format("joint '{}' connects body '{}' to itself", entry->name,
+                                from->body()->name()));
+      continue;
+    }
+    if (from->body() == nullptr && to->body() == nullptr) {
+      r.error("to", fmt::format("joint '{}' connects ground to ground", entry->name));
+      continue;
+    }
+    std::unique_ptr<Joint> joint;
+    try {
+      joint =
+          std::make_unique<Joint>(entry->name, joint_type(*type), std::move(from), std::move(to));
+    } catch (const std::invalid_argument& e) {
+      r.error("type", fmt::format("joint '{}': {}", entry->name, e.what()));
+      continue;
+    }
+    if (*type == "flex") {
+      auto spring = std::make_unique<RotationalSpring>(
+          entry->name + ".spring", ctx.marker(entry->from, r.key_path("from")),
+          ctx.marker(entry->to, r.key_path("to")), *stiffness * kKnmPerDeg, *damping * kKnmPerDeg);
+      const RotationalSpring* s = spring.get();
+      joint->set_extra_moment([s](const State& st) { return s->moment_on_b(st); });
+      ctx.system.add_force(std::move(spring));
+    }
+    ctx.constraint_origin[entry->name] = {node[i].Mark(), path};
+    ctx.system.add_constraint(std::move(joint));
+  }
+}
+
+void load_connections(const YAML::Node& node, LoadContext& ctx) {
+  if (!node.IsSequence()) {
+    ctx.diag.error(node.Mark(), "connections",
+                   fmt::format("expected a list of connections, got {}", describe(node)));
+    return;
+  }
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string path = fmt::format("connections[{}]", i);
+    MapReader r(ctx.diag, node[i], path);
+    if (!r.valid()) continue;
+    const auto entry = read_pair(r, names, "connection");
+    r.choice("type", Need::kRequired, {"spring"});
+    const auto free_length = r.number("free_length", Need::kRequired, NumberRule::nonnegative("m"));
+    const bool linear = r.has("stiffness"), tabled = r.has("tension_table");
+    std::optional<SpringLaw> law;
+    if (linear && tabled) {
+      r.error("tension_table", "give either stiffness or tension_table, not both");
+    } else if (tabled) {
+      if (const auto rows = r.table("tension_table", Need::kRequired, 2)) {
+        std::vector<double> x, t;
+        for (const auto& row : *rows) {
+          x.push_back(row[0]);
+          t.push_back(row[1]);
+        }
+        try {
+          law = SpringLaw::table(std::move(x), std::move(t));
+        } catch (const std::invalid_argument&) {
+          r.error("tension_table",
+                  "expected two or more rows [extension (m), tension (N)] with extensions "
+                  "increasing strictly");
+        }
+      }
+    } else if (const auto k =
+                   r.number("stiffness", Need::kRequired, NumberRule::nonnegative("N/m"))) {
+      law = SpringLaw::linear(*k);
+    }
+    std::optional<double> damping = 0.0;
+    if (r.has("damping"))
+      damping = r.number("damping", Need::kRequired, NumberRule::nonnegative("N s/m"));
+    const auto slack = read_bool(r, "slack");
+    std::unique_ptr<Marker> from, to;
+    if (entry) {
+      from = ctx.marker(entry->from, r.key_path("from"));
+      to = ctx.marker(entry->to, r.key_path("to"));
+    }
+    r.finish();
+    if (!entry || !free_length || !law || !damping || !slack || !from || !to) continue;
+    ctx.system.add_force(std::make_unique<SpringDamper>(entry->name, std::move(from), std::move(to),
+                                                        *free_length, std::move(*law), *damping,
+                                                        *slack));
+  }
+}
+
+}  // namespace seaflex::io
