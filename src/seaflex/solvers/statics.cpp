@@ -72,6 +72,7 @@ class NewtonStatics {
         // stiffness to the Newton matrix only; the residual, hence the equilibrium, is
         // unchanged, and the free mode, which no force drives, does not move
         regularized_ = true;
+        unregularized_message_ = solver_.message();
         regularize();
         solver_.factorize(eval_.kkt.matrix());
       }
@@ -91,6 +92,15 @@ class NewtonStatics {
       }
       ++iterations;
       const double update = dx_.head(n_).lpNorm<Eigen::Infinity>();
+      if (regularized_ && eps_ * update > 1e-3 * r_.lpNorm<Eigen::Infinity>()) {
+        // the regularization carries a visible part of the load: a load drives a mode
+        // without stiffness (an undriven free mode does not move, so eps dq stays tiny)
+        failure_ = fmt::format(
+            "the tangent matrix is singular ({}): a mechanism, a body without supports, or "
+            "coordinates without stiffness, driven by the loads",
+            unregularized_message_);
+        return false;
+      }
       start_ = state;
       const double g0 = dx_.head(n_).dot(r_);
       take_step(state, 1.0, load_factor, res);
@@ -108,6 +118,7 @@ class NewtonStatics {
       for (SpMat::InnerIterator it(K, c); it; ++it)
         if (it.row() == c) largest = std::max(largest, std::abs(it.value()));
     const double eps = 1e-10 * std::max(largest, 1.0);
+    eps_ = eps;
     for (Index c = 0; c < n_; ++c)
       for (SpMat::InnerIterator it(K, c); it; ++it)
         if (it.row() == c) it.valueRef() += eps;
@@ -163,6 +174,8 @@ class NewtonStatics {
   State start_;
   std::string failure_;  // why the last solve failed, when it was not plain non-convergence
   bool regularized_ = false;
+  double eps_ = 0.0;
+  std::string unregularized_message_;
 };
 
 }  // namespace
