@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <utility>
 
 namespace seaflex::analytic {
 
@@ -30,13 +31,16 @@ inline double cantilever_omega(int n, double EI, double rhoA, double L) {
 struct ElasticaTip {
   double deflection;
   double shortening;
+  double angle = 0.0;  ///< tip slope angle theta(L), rad (down positive)
 };
 
-/// With a vertical tip load P (N, downward) as well: M' = -(q (L - s) + P) cos(theta).
-inline ElasticaTip elastica_cantilever(double q, double L, double EI, int n = 4000,
-                                       double P = 0.0) {
+/// With a vertical tip load P (N, downward) as well: M' = -(q (L - s) + P) cos(theta);
+/// and a tip moment (N m, sagging positive) that may depend on the tip angle (a body
+/// hanging off the tip whose lever turns with it): M(L) = tip_moment(theta(L)).
+inline ElasticaTip elastica_cantilever(double q, double L, double EI, int n = 4000, double P = 0.0,
+                                       const std::function<double(double)>& tip_moment = {}) {
   // integrates (theta, M, x, z) from 0 to L for a given M(0)
-  auto integrate = [&](double M0, double* x_tip, double* z_tip) {
+  auto integrate = [&](double M0, double* x_tip, double* z_tip, double* theta_tip) {
     double y[4] = {0.0, M0, 0.0, 0.0};  // theta, M, x, z (down positive)
     auto f = [&](double s, const double* v, double* d) {
       d[0] = v[1] / EI;
@@ -59,22 +63,59 @@ inline ElasticaTip elastica_cantilever(double q, double L, double EI, int n = 40
     }
     if (x_tip) *x_tip = y[2];
     if (z_tip) *z_tip = y[3];
-    return y[1];  // M(L), to be zero
+    if (theta_tip) *theta_tip = y[0];
+    return y[1] - (tip_moment ? tip_moment(y[0]) : 0.0);  // M(L) - M_tip, to be zero
   };
   // the root moment lies in (0, M_lin], M_lin that of linear theory (the load arm only
   // shortens); M(L) grows with M(0): bisection to round-off
-  const double M_lin = 0.5 * q * L * L + P * L;
+  const double M_lin = 0.5 * q * L * L + P * L + (tip_moment ? std::abs(tip_moment(0.0)) : 0.0);
   double lo = 0.0, hi = M_lin, b = M_lin;
   for (int it = 0; it < 200 && hi - lo > 1e-15 * M_lin; ++it) {
     b = 0.5 * (lo + hi);
-    if (integrate(b, nullptr, nullptr) > 0.0)
+    if (integrate(b, nullptr, nullptr, nullptr) > 0.0)
       hi = b;
     else
       lo = b;
   }
-  double x = 0, z = 0;
-  integrate(b, &x, &z);
-  return {z, L - x};
+  double x = 0, z = 0, theta = 0;
+  integrate(b, &x, &z, &theta);
+  return {z, L - x, theta};
+}
+
+/// Complete elliptic integral of the first kind K(k) from the complementary modulus
+/// k' = sqrt(1 - k^2) (passed directly, so k near 1 loses no digits), by the
+/// arithmetic-geometric mean: K = pi / (2 agm(1, k')) (Abramowitz & Stegun 17.6).
+inline double elliptic_k_complementary(double kprime) {
+  double a = 1.0, b = kprime;
+  for (int i = 0; i < 64 && std::abs(a - b) > 1e-16 * a; ++i) {
+    const double m = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = m;
+  }
+  return std::numbers::pi / (a + b);
+}
+
+/// Torque-free rigid body (Landau & Lifshitz, Mechanics, sec. 37): principal inertias
+/// I1 < I2 < I3 and body angular velocity (w1, w2, w3) about those axes. With
+/// E = 1/2 sum I_i w_i^2 and M^2 = sum I_i^2 w_i^2, for M^2 > 2 E I2
+///   w2 = sqrt((2 E I3 - M^2) / (I2 (I3 - I2))) sn(tau, k),
+///   tau = t sqrt((I3 - I2)(M^2 - 2 E I1) / (I1 I2 I3)),
+///   k^2 = (I2 - I1)(2 E I3 - M^2) / ((I3 - I2)(M^2 - 2 E I1)),
+///   k'^2 = 1 - k^2 = (I3 - I1)(M^2 - 2 E I2) / ((I3 - I2)(M^2 - 2 E I1)),
+/// and with the suffixes 1 and 3 exchanged for M^2 < 2 E I2. sn changes sign every 2 K(k)
+/// of tau, so the intermediate axis reverses (w2 and the axis' component along the
+/// angular momentum change sign) every 2 K(k) / (dtau/dt) seconds: this is returned.
+/// Differences such as M^2 - 2 E I_j are summed as sum I_i (I_i - I_j) w_i^2, without
+/// cancellation.
+inline double torque_free_flip_interval(double I1, double I2, double I3, double w1, double w2,
+                                        double w3) {
+  auto diff = [&](double Ij) {  // M^2 - 2 E Ij
+    return I1 * (I1 - Ij) * w1 * w1 + I2 * (I2 - Ij) * w2 * w2 + I3 * (I3 - Ij) * w3 * w3;
+  };
+  if (diff(I2) < 0.0) std::swap(I1, I3);  // the motion circles the other extreme axis
+  const double rate = std::sqrt((I3 - I2) * diff(I1) / (I1 * I2 * I3));
+  const double kprime = std::sqrt((I3 - I1) * diff(I2) / ((I3 - I2) * diff(I1)));
+  return 2.0 * elliptic_k_complementary(kprime) / rate;
 }
 
 }  // namespace seaflex::analytic

@@ -189,19 +189,23 @@ std::pair<Vec3, Vec3> Joint::reaction(const State& state, const Eigen::Ref<const
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     factor(rows_[r].u, state, u);
     const Factor wf = rows_[r].w;
-    if (wf == Factor::kSeparation) {
-      F -= mu[r] * u.value;
+    if (!swapped_) {
+      if (wf == Factor::kSeparation) {
+        F -= mu[r] * u.value;
+      } else {
+        // w holds the "to" axis a (kToX..kToZ, or the slope difference): moment mu u x a
+        pair_.evaluate(define(wf).vector, 0.0, 1.0, state, w);
+        M += mu[r] * u.value.cross(w.value);
+      }
     } else {
-      // w holds the "to" axis a (kToX..kToZ, or the slope difference): moment mu u x a
-      pair_.evaluate(define(wf).vector, 0.0, 1.0, state, w);
-      M += mu[r] * u.value.cross(w.value);
+      // the body named "to" is internally "from": w = d holds -p_from, giving the force
+      // mu u at its point; u = an axis a of it gives the moment mu w x a (exact also
+      // where the joint is violated, unlike the opposite of the other body's reaction)
+      factor(wf, state, w);
+      if (wf == Factor::kSeparation) F += mu[r] * u.value;
+      if (rows_[r].u >= Factor::kFromX && rows_[r].u <= Factor::kFromZ)
+        M += mu[r] * w.value.cross(u.value);
     }
-  }
-  if (swapped_) {
-    // reported on the body named "to" (internally "from"), about its marker point
-    const Vec3 arm = pair_.b().position(state) - pair_.a().position(state);
-    M = -M - arm.cross(F);
-    F = -F;
   }
   if (extra_moment_) M += extra_moment_(state);
   return {F, M};

@@ -30,6 +30,8 @@ struct LoadContext {
   std::vector<std::string> failed_markers;
   /// where each constraint was defined (name -> mark, key path), for the model check
   std::map<std::string, std::pair<YAML::Mark, std::string>> constraint_origin;
+  /// where each connection was defined (name -> mark, key path)
+  std::map<std::string, std::pair<YAML::Mark, std::string>> connection_origin;
 
   /// Reads the body name at key: a body of the model, or ground (nullptr with *ground set)
   /// when allow_ground. Reports a dangling reference with a suggestion.

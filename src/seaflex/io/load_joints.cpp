@@ -36,37 +36,48 @@ bool valid_name(const std::string& s) {
              std::string::npos;
 }
 
-// name, from and to of a joint or connection entry
+// name, from and to of a joint or connection entry; from and to are read whatever becomes
+// of the name, so their problems are reported too
 struct PairEntry {
-  std::string name;
-  YAML::Node from, to;
+  std::optional<std::string> name;  ///< nullopt after a reported problem
+  YAML::Node from, to;              ///< undefined when missing (reported)
 };
 
-std::optional<PairEntry> read_pair(MapReader& r, std::set<std::string>& names, const char* what) {
+PairEntry read_pair(MapReader& r, std::set<std::string>& names, const char* what) {
   PairEntry e;
   const auto name = r.text("name", Need::kRequired);
   e.from = r.get("from", Need::kRequired, "a marker name or {body: ..., ...}");
   e.to = r.get("to", Need::kRequired, "a marker name or {body: ..., ...}");
-  if (!name) return std::nullopt;
+  if (!name) return e;
   if (!valid_name(*name)) {
     r.error("name", fmt::format("{} names may use letters, digits, '_' and '-' only (they become "
                                 "output channel names such as <name>.fx)",
                                 what));
-    return std::nullopt;
+    return e;
   }
   if (!names.insert(*name).second) {
     r.error("name", fmt::format("a second {} named '{}': names must be unique", what, *name));
-    return std::nullopt;
+    return e;
   }
   e.name = *name;
   return e;
 }
 
+// the markers of an entry (nullptr where missing or after a reported problem)
+std::pair<std::unique_ptr<Marker>, std::unique_ptr<Marker>> read_markers(MapReader& r,
+                                                                         const PairEntry& e,
+                                                                         LoadContext& ctx) {
+  std::unique_ptr<Marker> from, to;
+  if (e.from.IsDefined()) from = ctx.marker(e.from, r.key_path("from"));
+  if (e.to.IsDefined()) to = ctx.marker(e.to, r.key_path("to"));
+  return {std::move(from), std::move(to)};
+}
+
 std::optional<bool> read_bool(MapReader& r, std::string_view key) {
   const YAML::Node n = r.get(key);
   if (!n.IsDefined()) return false;
-  bool value = false;
-  if (n.IsScalar() && YAML::convert<bool>::decode(n, value)) return value;
+  // true or false only, as everywhere in the model file (not yes, no, on, True, ...)
+  if (n.IsScalar() && (n.Scalar() == "true" || n.Scalar() == "false")) return n.Scalar() == "true";
   r.error(key, fmt::format("expected true or false, got {}", describe(n)));
   return std::nullopt;
 }
@@ -95,40 +106,39 @@ void load_joints(const YAML::Node& node, LoadContext& ctx) {
       for (const char* k : {"stiffness", "damping"})
         if (r.has(k))
           r.error(k, fmt::format("only a flex joint takes {}; a {} joint is rigid", k, *type));
+    } else {
+      r.has("stiffness");  // not judged without a valid type
+      r.has("damping");
     }
-    std::unique_ptr<Marker> from, to;
-    if (entry) {
-      from = ctx.marker(entry->from, r.key_path("from"));
-      to = ctx.marker(entry->to, r.key_path("to"));
-    }
+    auto [from, to] = read_markers(r, entry, ctx);
     r.finish();
-    if (!entry || !type || !from || !to || !stiffness || !damping) continue;
+    if (!entry.name || !type || !from || !to || !stiffness || !damping) continue;
     if (from->body() != nullptr && from->body() == to->body()) {
-      r.error("to", fmt::format("joint '{}' connects body '{}' to itself", entry->name,
+      r.error("to", fmt::format("joint '{}' connects body '{}' to itself", *entry.name,
                                 from->body()->name()));
       continue;
     }
     if (from->body() == nullptr && to->body() == nullptr) {
-      r.error("to", fmt::format("joint '{}' connects ground to ground", entry->name));
+      r.error("to", fmt::format("joint '{}' connects ground to ground", *entry.name));
       continue;
     }
     std::unique_ptr<Joint> joint;
     try {
       joint =
-          std::make_unique<Joint>(entry->name, joint_type(*type), std::move(from), std::move(to));
+          std::make_unique<Joint>(*entry.name, joint_type(*type), std::move(from), std::move(to));
     } catch (const std::invalid_argument& e) {
-      r.error("type", fmt::format("joint '{}': {}", entry->name, e.what()));
+      r.error("type", fmt::format("joint '{}': {}", *entry.name, e.what()));
       continue;
     }
     if (*type == "flex") {
       auto spring = std::make_unique<RotationalSpring>(
-          entry->name + ".spring", ctx.marker(entry->from, r.key_path("from")),
-          ctx.marker(entry->to, r.key_path("to")), *stiffness * kKnmPerDeg, *damping * kKnmPerDeg);
+          *entry.name + ".spring", ctx.marker(entry.from, r.key_path("from")),
+          ctx.marker(entry.to, r.key_path("to")), *stiffness * kKnmPerDeg, *damping * kKnmPerDeg);
       const RotationalSpring* s = spring.get();
       joint->set_extra_moment([s](const State& st) { return s->moment_on_b(st); });
       ctx.system.add_force(std::move(spring));
     }
-    ctx.constraint_origin[entry->name] = {node[i].Mark(), path};
+    ctx.constraint_origin[*entry.name] = {node[i].Mark(), path};
     ctx.system.add_constraint(std::move(joint));
   }
 }
@@ -152,7 +162,7 @@ void load_connections(const YAML::Node& node, LoadContext& ctx) {
     if (linear && tabled) {
       r.error("tension_table", "give either stiffness or tension_table, not both");
     } else if (tabled) {
-      if (const auto rows = r.table("tension_table", Need::kRequired, 2)) {
+      if (const auto rows = r.table("tension_table", Need::kRequired, 2, "extensions")) {
         std::vector<double> x, t;
         for (const auto& row : *rows) {
           x.push_back(row[0]);
@@ -174,14 +184,11 @@ void load_connections(const YAML::Node& node, LoadContext& ctx) {
     if (r.has("damping"))
       damping = r.number("damping", Need::kRequired, NumberRule::nonnegative("N s/m"));
     const auto slack = read_bool(r, "slack");
-    std::unique_ptr<Marker> from, to;
-    if (entry) {
-      from = ctx.marker(entry->from, r.key_path("from"));
-      to = ctx.marker(entry->to, r.key_path("to"));
-    }
+    auto [from, to] = read_markers(r, entry, ctx);
     r.finish();
-    if (!entry || !free_length || !law || !damping || !slack || !from || !to) continue;
-    ctx.system.add_force(std::make_unique<SpringDamper>(entry->name, std::move(from), std::move(to),
+    if (!entry.name || !free_length || !law || !damping || !slack || !from || !to) continue;
+    ctx.connection_origin[*entry.name] = {node[i].Mark(), path};
+    ctx.system.add_force(std::make_unique<SpringDamper>(*entry.name, std::move(from), std::move(to),
                                                         *free_length, std::move(*law), *damping,
                                                         *slack));
   }

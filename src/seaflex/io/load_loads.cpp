@@ -82,6 +82,10 @@ std::unique_ptr<Force> build_point_force(MapReader& r, const std::string& name, 
     for (const char* k : {"body", "node", "arc_length"})
       if (r.has(k)) r.error(k, "give the point either by at or by body and node/arc_length");
     point = ctx.marker(r.get("at"), r.key_path("at"));
+    if (point && point->body() == nullptr) {
+      r.error("at", "a load at a ground marker would act on nothing; give a marker on a body");
+      point.reset();
+    }
   } else {
     const AncfBeam* beam = ctx.beam_ref(r, "body");
     const bool at_node = r.has("node"), at_s = r.has("arc_length");

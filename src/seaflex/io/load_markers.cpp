@@ -84,6 +84,9 @@ std::unique_ptr<Marker> LoadContext::marker(const YAML::Node& node, const std::s
   }
   MapReader r(diag, node, path);
   if (!r.valid()) return nullptr;
+  // a marker with any problem is not built: a named one is then reported once, where it
+  // is defined, not again at every reference
+  const std::size_t errors_before = diag.count();
   bool ground = false;
   const Body* body = body_ref(r, "body", true, &ground);
   std::unique_ptr<Marker> m;
@@ -128,6 +131,7 @@ std::unique_ptr<Marker> LoadContext::marker(const YAML::Node& node, const std::s
       r.has(k);
   }
   r.finish();
+  if (diag.count() != errors_before) return nullptr;
   return m;
 }
 

@@ -9,6 +9,7 @@
 
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/forces/gravity.hpp"
+#include "seaflex/forces/spring_damper.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/solvers/constraint_audit.hpp"
 
@@ -117,12 +118,30 @@ void check_constraints(LoadContext& ctx) {
   }
 }
 
+// Springs whose end points coincide at the start: the line of action of the force is
+// undefined there, and every analysis would stop at its first evaluation.
+void check_springs(LoadContext& ctx) {
+  const State s0 = ctx.system.initial_state();
+  for (const auto& f : ctx.system.forces()) {
+    const auto* spring = dynamic_cast<const SpringDamper*>(f.get());
+    if (!spring || spring->length(s0) > 0.0) continue;
+    const auto it = ctx.connection_origin.find(spring->name());
+    const auto [mark, path] = it != ctx.connection_origin.end()
+                                  ? it->second
+                                  : std::pair(YAML::Mark::null_mark(), std::string());
+    ctx.diag.error(mark, path,
+                   fmt::format("the end points of spring '{}' coincide at the start, so the "
+                               "direction of its force is undefined; place its ends apart",
+                               spring->name()));
+  }
+}
+
 Model load(const YAML::Node& root, const std::string& name) {
   Diagnostics diag(name);
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();
@@ -161,6 +180,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   diag.throw_if_any();
   model.system->finalize();
   check_constraints(ctx);
+  check_springs(ctx);
   diag.throw_if_any();
   return model;
 }

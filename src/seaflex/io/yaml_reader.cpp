@@ -257,7 +257,8 @@ std::optional<Vec3> MapReader::vec3(std::string_view key, Need need, std::string
 }
 
 std::optional<std::vector<std::vector<double>>> MapReader::table(std::string_view key, Need need,
-                                                                 int columns) {
+                                                                 int columns,
+                                                                 std::string_view first_column) {
   const YAML::Node n = get(key, need, fmt::format("a list of rows of {} numbers", columns));
   if (!n.IsDefined()) return std::nullopt;
   if (!n.IsSequence() || n.size() < 2) {
@@ -286,9 +287,9 @@ std::optional<std::vector<std::vector<double>>> MapReader::table(std::string_vie
       values.push_back(x.value_or(0.0));
     }
     if (ok && !rows.empty() && !(values[0] > rows.back()[0])) {
-      diag_.error(
-          row.Mark(), rk,
-          fmt::format("times must increase strictly: {} follows {}", values[0], rows.back()[0]));
+      diag_.error(row.Mark(), rk,
+                  fmt::format("{} must increase strictly: {} follows {}", first_column, values[0],
+                              rows.back()[0]));
       ok = false;
     }
     rows.push_back(std::move(values));

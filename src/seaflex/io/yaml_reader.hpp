@@ -23,6 +23,7 @@ class Diagnostics {
   explicit Diagnostics(std::string file) : file_(std::move(file)) {}
   void error(const YAML::Mark& mark, std::string key, std::string message);
   bool empty() const { return list_.empty(); }
+  std::size_t count() const { return list_.size(); }
   /// Throws InputError with every diagnostic, in file order, when there is any.
   void throw_if_any() const;
   const std::string& file() const { return file_; }
@@ -79,9 +80,11 @@ class MapReader {
   std::optional<std::string> choice(std::string_view key, Need need,
                                     const std::vector<std::string>& options);
   std::optional<Vec3> vec3(std::string_view key, Need need, std::string_view unit);
-  /// A list of rows of numbers, each with `columns` entries.
+  /// A list of rows of numbers, each with `columns` entries; the first column (named
+  /// first_column in messages) increasing strictly.
   std::optional<std::vector<std::vector<double>>> table(std::string_view key, Need need,
-                                                        int columns);
+                                                        int columns,
+                                                        std::string_view first_column = "times");
 
   /// Records an error at key (or at the map itself when the key is absent).
   void error(std::string_view key, std::string message);

@@ -92,7 +92,8 @@ Mat3 rotation_from_roll_pitch_yaw(double roll, double pitch, double yaw) {
 }
 
 Vec3 roll_pitch_yaw_from_rotation(const Mat3& A) {
-  const double pitch = std::asin(std::clamp(-A(2, 0), -1.0, 1.0));
+  // atan2 rather than asin(-A(2, 0)): asin loses half the digits near +-90 deg
+  const double pitch = std::atan2(-A(2, 0), std::hypot(A(2, 1), A(2, 2)));
   if (std::abs(A(2, 0)) > 1.0 - 1e-12) {
     // gimbal lock: only roll -+ yaw is defined; report it all as roll
     return {std::atan2(-A(1, 2), A(1, 1)), pitch, 0.0};

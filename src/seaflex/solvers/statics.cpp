@@ -126,6 +126,27 @@ class NewtonStatics {
 
   bool regularized() const { return regularized_; }
 
+  // Least-squares multipliers C_q^T mu ~ Q at the start, from [I C_q^T; C_q 0][x; mu] =
+  // [Q; 0]: without them the first Newton matrix lacks the d(C_q^T mu)/dq stiffness that
+  // holds a mode only gravity restrains through a joint (a hanging body's swing), and is
+  // singular there.
+  void estimate_multipliers(State& state, double load_factor) {
+    DaeRequest req;
+    req.matrix = true;
+    req.scales = MatrixScales{0.0, 0.0, 0.0};
+    req.load_factor = load_factor;
+    dae_.evaluate(state, req, eval_);
+    SpMat& K = eval_.kkt.matrix();
+    for (Index c = 0; c < n_; ++c)
+      for (SpMat::InnerIterator it(K, c); it; ++it)
+        if (it.row() == c) it.valueRef() = 1.0;
+    if (!solver_.factorize(K)) return;  // leave zero multipliers: Newton reports the problem
+    rhs_.head(n_) = eval_.Q;
+    rhs_.tail(m_).setZero();
+    solver_.solve(rhs_, dx_);
+    if (dx_.allFinite()) state.lambda = dx_.tail(m_);
+  }
+
   void take_step(State& state, double alpha, double load_factor, Residual& res) {
     state.q = start_.q + alpha * dx_.head(n_);
     state.lambda = start_.lambda + alpha * dx_.tail(m_);
@@ -190,6 +211,8 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
   StaticsReport report;
   double factor = 0.0;
   double increment = 1.0 / std::max(1, settings.load_steps);
+  if (dae.num_constraints() > 0 && state.lambda.isZero(0.0))
+    newton.estimate_multipliers(state, increment);
   Residual res;
   while (factor < 1.0) {
     const double target = std::min(1.0, factor + increment);
