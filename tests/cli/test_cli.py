@@ -6,6 +6,7 @@ keep the results computed up to the failure, and runs are deterministic.
 usage: test_cli.py SEAFLEX_EXECUTABLE SOURCE_DIR
 """
 import csv
+import math
 import os
 import subprocess
 import sys
@@ -35,6 +36,28 @@ bodies:
 supports:
   - {body: beam, node: start, type: clamped}
 """
+
+# a 50 kg body (inertia with products) hanging at rest on a ball joint, its centre of
+# gravity 2 m straight below the joint. In two load steps: the first starts in equilibrium
+# (statics begins from least-squares multipliers), the second takes a Newton step, whose
+# tangent is singular: nothing holds the body's spin about the vertical through the joint.
+HANGING = """
+environment: {gravity: 9.81}
+bodies:
+  bob:
+    type: rigid_body
+    mass: 50
+    inertia: [[12, 0.8, -0.5], [0.8, 9, 0.3], [-0.5, 0.3, 15]]
+    position: [1, 2, -1]
+joints:
+  - name: hook
+    type: ball
+    from: {body: ground, position: [1, 2, 1]}
+    to: {body: bob, position: [0, 0, 2]}
+statics: {load_steps: 2}
+"""
+
+REACTIONS = ["hook.fx", "hook.fy", "hook.fz", "hook.mx", "hook.my", "hook.mz"]
 
 
 class Cli(unittest.TestCase):
@@ -169,6 +192,52 @@ class Cli(unittest.TestCase):
         self.assertLess(rows[-1][0], t_fail)
         for row in rows:  # every kept row is finite
             self.assertTrue(all(abs(x) < 1e300 for x in row))
+
+    def test_statics_of_a_body_hanging_on_a_ball_joint(self):
+        out = os.path.join(self.dir, "out")
+        r = run("statics", self.model(HANGING), "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        # the body may spin freely about the vertical through the joint: statics says that it
+        # regularized that free rotation
+        self.assertIn("Newton steps were regularized", r.stdout)
+        header, rows = read_csv(os.path.join(out, "statics.csv"))
+        self.assertEqual(len(rows), 1)
+        value = dict(zip(header, rows[0]))
+        mg = 50 * 9.81
+        # the reaction on the body named 'to' holds its weight: (0, 0, m g), no moment
+        self.assertAlmostEqual(value["hook.fz"] / mg, 1.0, delta=1e-9)
+        for c in ("hook.fx", "hook.fy", "hook.mx", "hook.my", "hook.mz"):
+            self.assertLess(abs(value[c]), 1e-9 * mg, c)
+        # already in equilibrium: the body has not moved, nor tilted
+        for c, x in (("bob.x", 1.0), ("bob.y", 2.0), ("bob.z", -1.0), ("bob.roll", 0.0),
+                     ("bob.pitch", 0.0)):
+            self.assertAlmostEqual(value[c], x, delta=1e-9, msg=c)
+
+    def test_run_writes_joint_reactions(self):
+        # swinging about x at 30 deg/s through the lowest point: v = w x (r - pivot)
+        text = HANGING.replace(
+            "position: [1, 2, -1]",
+            "position: [1, 2, -1]\n    angular_velocity: [30, 0, 0]\n"
+            "    velocity: [0, 1.0471975511965976, 0]")
+        path = self.model(text + "dynamics: {time_step: 1e-3, duration: 1.0, output_interval: 0.1}\n")
+        out = os.path.join(self.dir, "out")
+        r = run("run", path, "-o", out, "--quiet")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        # bodies' channels first, the joint reactions last
+        self.assertEqual(header[-6:], REACTIONS)
+        self.assertIn("bob.wx", header)
+        self.assertEqual(len(rows), 11)
+        for row in rows:
+            value = dict(zip(header, row))
+            for c in REACTIONS:
+                self.assertTrue(math.isfinite(value[c]), c)
+            # the joint pulls the swinging body up and towards the pivot; a ball joint
+            # transmits no moment
+            self.assertGreater(value["hook.fz"], 0.0)
+            self.assertEqual([value[c] for c in REACTIONS[3:]], [0.0, 0.0, 0.0])
+        # at the lowest point, moving: more than the weight (the centripetal part)
+        self.assertGreater(rows[0][header.index("hook.fz")], 50 * 9.81)
 
     def test_statics_failure_exits_3_and_keeps_last_increment(self):
         # a beam with no supports has no static equilibrium

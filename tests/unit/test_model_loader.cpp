@@ -5,10 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numbers>
 #include <regex>
+#include <stdexcept>
 
+#include "seaflex/constraints/joint.hpp"
 #include "seaflex/core/errors.hpp"
 #include "seaflex/elements/ancf_beam.hpp"
+#include "seaflex/elements/rigid_body.hpp"
+#include "seaflex/forces/rotational_spring.hpp"
+#include "seaflex/math/rotation.hpp"
 
 using namespace seaflex;
 
@@ -26,6 +33,50 @@ const std::string kBase = R"(bodies:
     density: 7850
 supports:
   - {body: beam, node: start, type: clamped}
+)";
+
+// a beam clamped at x = 0 carrying a rigid body on a fixed joint at its tip (the body
+// marker's z axis along the beam's slope)
+const std::string kRigid = R"(bodies:
+  beam:
+    type: ancf_beam
+    start: [0, 0, 0]
+    end: [10, 0, 0]
+    elements: 10
+    area: 0.01
+    second_moment: 8.33e-6
+    youngs_modulus: 210e9
+    density: 7850
+  box:
+    type: rigid_body
+    mass: 1000
+    inertia: [100, 200, 250]
+    position: [11, 0, 0]
+markers:
+  tip: {body: beam, node: end}
+  face: {body: box, position: [-1, 0, 0], axis: [1, 0, 0]}
+supports:
+  - {body: beam, node: start, type: clamped}
+joints:
+  - {name: weld, type: fixed, from: face, to: tip}
+)";
+
+// a spring from the body to a point 5 m above the beam's tip
+const std::string kSpring =
+    "connections:\n  - {name: s, type: spring, from: face, to: {body: ground, position: [11, 0, "
+    "5]}, free_length: 4, stiffness: 1e3}\n";
+
+// planar four-bar of parallel revolute joints (hinge axes along y): 3 bodies, 6 x 3 = 18
+// degrees of freedom, 4 x 5 = 20 rows, one degree of freedom left: 3 rows are redundant
+const std::string kFourBar = R"(bodies:
+  crank1: {type: rigid_body, mass: 10, inertia: [1, 1, 0.1], position: [0, 0, -0.5]}
+  crank2: {type: rigid_body, mass: 10, inertia: [1, 1, 0.1], position: [2, 0, -0.5]}
+  bar: {type: rigid_body, mass: 20, inertia: [0.1, 7, 7], position: [1, 0, -1]}
+joints:
+  - {name: a, type: revolute, from: {body: ground, position: [0, 0, 0], axis: [0, 1, 0]}, to: {body: crank1, position: [0, 0, 0.5], axis: [0, 1, 0]}}
+  - {name: b, type: revolute, from: {body: crank1, position: [0, 0, -0.5], axis: [0, 1, 0]}, to: {body: bar, position: [-1, 0, 0], axis: [0, 1, 0]}}
+  - {name: c, type: revolute, from: {body: bar, position: [1, 0, 0], axis: [0, 1, 0]}, to: {body: crank2, position: [0, 0, -0.5], axis: [0, 1, 0]}}
+  - {name: d, type: revolute, from: {body: crank2, position: [0, 0, 0.5], axis: [0, 1, 0]}, to: {body: ground, position: [2, 0, 0], axis: [0, 1, 0]}}
 )";
 
 std::string replace(std::string text, const std::string& from, const std::string& to) {
@@ -209,6 +260,225 @@ INSTANTIATE_TEST_SUITE_P(
             "m.yaml:2:3: bodies.my.beam: body names may use letters, digits, '_' and '-' only "
             "(they become output channel names such as <body>.n0.x)\n"
             "m.yaml:12:12: supports[0].body: no body named 'beam': the model has no valid bodies"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) {
+      std::string name = info.param.what;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
+
+namespace {
+
+const Constraint& constraint_named(const System& sys, const std::string& name) {
+  for (const auto& c : sys.constraints())
+    if (c->name() == name) return *c;
+  throw std::logic_error("no constraint named " + name);
+}
+
+}  // namespace
+
+// Every joint type, each on its own rigid body held at its centre of gravity by ground, plus
+// beam-to-beam and beam-to-body fixed joints: the rows of constraints/joint.hpp, and the
+// flex joint's rotational spring with its stiffness converted from kN m/deg.
+TEST(ModelLoader, EveryJointTypeWithItsRows) {
+  const std::string text = R"(environment: {gravity: 0}
+bodies:
+  beam: {type: ancf_beam, start: [0, 0, 0], end: [4, 0, 0], elements: 4, area: 0.01, second_moment: 8.33e-6, youngs_modulus: 210e9, density: 7850}
+  beam2: {type: ancf_beam, start: [4, 0, 0], end: [8, 0, 0], elements: 2, area: 0.01, second_moment: 8.33e-6, youngs_modulus: 210e9, density: 7850}
+  b_ball: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 10, 0]}
+  b_universal: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 20, 0]}
+  b_revolute: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 30, 0]}
+  b_cylindrical: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 40, 0]}
+  b_prismatic: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 50, 0]}
+  b_fixed: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 60, 0]}
+  b_flex: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 70, 0]}
+  tipbox: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [9, 0, 0]}
+supports:
+  - {body: beam, node: start, type: clamped}
+joints:
+  - {name: ball, type: ball, from: {body: ground, position: [0, 10, 0]}, to: {body: b_ball}}
+  - {name: universal, type: universal, from: {body: ground, position: [0, 20, 0]}, to: {body: b_universal}}
+  - {name: revolute, type: revolute, from: {body: ground, position: [0, 30, 0]}, to: {body: b_revolute}}
+  - {name: cylindrical, type: cylindrical, from: {body: ground, position: [0, 40, 0]}, to: {body: b_cylindrical}}
+  - {name: prismatic, type: prismatic, from: {body: ground, position: [0, 50, 0]}, to: {body: b_prismatic}}
+  - {name: fixed, type: fixed, from: {body: ground, position: [0, 60, 0]}, to: {body: b_fixed}}
+  - {name: flex, type: flex, stiffness: 2, damping: 0.5, from: {body: ground, position: [0, 70, 0]}, to: {body: b_flex}}
+  - {name: beams, type: fixed, from: {body: beam, node: end}, to: {body: beam2, node: start}}
+  - {name: tip, type: fixed, from: {body: beam2, node: end}, to: {body: tipbox, position: [-1, 0, 0], axis: [1, 0, 0]}}
+)";
+  const io::Model m = io::load_model_text(text, "m.yaml");
+  const System& sys = *m.system;
+  const std::vector<std::pair<std::string, Index>> rows{
+      {"ball", 3},  {"universal", 4}, {"revolute", 5}, {"cylindrical", 4}, {"prismatic", 5},
+      {"fixed", 6}, {"flex", 3},      {"beams", 6},    {"tip", 5}};
+  Index joint_rows = 0;
+  for (const auto& [name, n] : rows) {
+    const Constraint& c = constraint_named(sys, name);
+    EXPECT_EQ(c.num_rows(), n) << name;
+    EXPECT_NE(dynamic_cast<const Joint*>(&c), nullptr) << name;
+    joint_rows += n;
+  }
+  EXPECT_EQ(joint_rows, 41);
+  // + 6 of the clamped support + 1 Euler-parameter normalization per rigid body
+  EXPECT_EQ(sys.num_constraints(), 41 + 6 + 8);
+  EXPECT_EQ(sys.num_coordinates(), 6 * (5 + 3) + 7 * 8);
+  // the beam named first is behind the body internally, but from/to stay as named
+  const auto& tip = dynamic_cast<const Joint&>(constraint_named(sys, "tip"));
+  EXPECT_EQ(tip.from().body(), sys.find_body("beam2"));
+  EXPECT_EQ(tip.to().body(), sys.find_body("tipbox"));
+  EXPECT_EQ(tip.type(), JointType::kFixed);
+  EXPECT_EQ(dynamic_cast<const Joint&>(constraint_named(sys, "flex")).type(), JointType::kBall);
+
+  // flex adds one force, its rotational spring "<joint>.spring", beside the ball joint's
+  // rows; no other forces (gravity is off)
+  ASSERT_EQ(sys.forces().size(), 1u);
+  const auto* spring = dynamic_cast<const RotationalSpring*>(sys.forces()[0].get());
+  ASSERT_NE(spring, nullptr);
+  EXPECT_EQ(spring->name(), "flex.spring");
+  // 2 kN m/deg: tilting the body 10 deg about x stores 1/2 k theta^2 with k in N m/rad
+  State s = sys.initial_state();
+  const auto& flex_body = *sys.find_body("b_flex");
+  const double theta = 10.0 * std::numbers::pi / 180.0;
+  s.q.segment<4>(flex_body.offset() + 3) =
+      math::euler_parameters_from_rotation(math::rotation_from_roll_pitch_yaw(theta, 0, 0));
+  const double k = 2.0 * 1000.0 * 180.0 / std::numbers::pi;
+  EXPECT_NEAR(spring->angle(s), theta, 1e-12);
+  EXPECT_NEAR(spring->potential_energy(s), 0.5 * k * theta * theta, 1e-9 * k);
+  // its channel, in degrees, after the bodies' channels and before the reactions
+  const ChannelList channels = sys.channels();
+  const auto it = std::find_if(channels.begin(), channels.end(),
+                               [](const auto& c) { return c.name == "flex.spring.angle"; });
+  ASSERT_NE(it, channels.end());
+  EXPECT_NEAR(it->value(s), 10.0, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    RigidBodiesAndJoints, ModelLoaderRejects,
+    ::testing::Values(
+        BadCase{"joint naming a missing body",
+                replace(kRigid, "to: tip}", "to: {body: bem, node: end}}"),
+                "m.yaml:22:54: joints[0].to.body: no body named 'bem'; did you mean 'beam'?"},
+        BadCase{"missing marker", replace(kRigid, "to: tip}", "to: tipp}"),
+                "m.yaml:22:47: joints[0].to: no marker named 'tipp'; did you mean 'tip'?"},
+        BadCase{
+            "marker beyond the beam's end",
+            replace(kRigid, "tip: {body: beam, node: end}", "tip: {body: beam, arc_length: 12}"),
+            "m.yaml:17:33: markers.tip.arc_length: must be between 0 and 10 m, got 12"},
+        BadCase{"marker node out of range",
+                replace(kRigid, "tip: {body: beam, node: end}", "tip: {body: beam, node: 11}"),
+                "m.yaml:17:27: markers.tip.node: must be between 0 and 10, got 11"},
+        BadCase{"inertia not positive definite",
+                replace(kRigid, "inertia: [100, 200, 250]", "inertia: [100, -200, 250]"),
+                "m.yaml:14:14: bodies.box.inertia: the inertia tensor is not positive definite "
+                "(principal moments -200, 100, 250 kg m^2)"},
+        BadCase{"inertia violating the triangle inequality",
+                replace(kRigid, "inertia: [100, 200, 250]", "inertia: [100, 200, 400]"),
+                "m.yaml:14:14: bodies.box.inertia: principal moments 100, 200, 400 kg m^2 violate "
+                "the triangle inequality I1 + I2 >= I3 that every real body meets"},
+        BadCase{"asymmetric inertia tensor",
+                replace(kRigid, "inertia: [100, 200, 250]",
+                        "inertia: [[100, 1, 0], [2, 200, 0], [0, 0, 250]]"),
+                "m.yaml:14:14: bodies.box.inertia: the inertia tensor must be symmetric: entry "
+                "[0][1] = 1 but [1][0] = 2"},
+        BadCase{"prismatic joint on a beam marker",
+                replace(kRigid, "type: fixed,", "type: prismatic,"),
+                "m.yaml:22:24: joints[0].type: joint 'weld': a prismatic joint needs the y axis of "
+                "both markers, but beam.n10 is a beam marker, which has only the slope axis (the "
+                "cable element carries no torsion)"},
+        BadCase{
+            "revolute joint between beams",
+            replace(replace(replace(kRigid,
+                                    "  box:\n    type: rigid_body\n    mass: 1000\n    "
+                                    "inertia: [100, 200, 250]\n    position: [11, 0, 0]\n",
+                                    "  beam2: {type: ancf_beam, start: [10, 0, 0], end: [20, "
+                                    "0, 0], elements: 5, area: 0.01, second_moment: 8.33e-6, "
+                                    "youngs_modulus: 210e9, density: 7850}\n"),
+                            "face: {body: box, position: [-1, 0, 0], axis: [1, 0, 0]}",
+                            "face: {body: beam2, node: start}"),
+                    "type: fixed,", "type: revolute,"),
+            "m.yaml:18:24: joints[0].type: joint 'weld': a revolute joint needs x and y axes "
+            "on one side, but beam2.n0 and beam.n10 are beam markers, which have only the slope "
+            "axis (the cable element carries no torsion); beam to beam takes ball or fixed"},
+        BadCase{"joint connecting a body to itself",
+                replace(kRigid, "to: tip}", "to: {body: box}}"),
+                "m.yaml:22:47: joints[0].to: joint 'weld' connects body 'box' to itself"},
+        BadCase{"ball joint to ground at a clamped node",
+                kRigid +
+                    "  - {name: extra, type: ball, from: {body: ground, position: [0, 0, 0]}, to: "
+                    "{body: beam, node: start}}\n",
+                "m.yaml:23:5: joints[1]: 'extra' over-constrains the assembly: its condition 'x' "
+                "repeats what 'support beam.n0' already imposes; remove it or use a joint with "
+                "fewer conditions (a closed loop of parallel revolute joints, such as a four-bar, "
+                "needs a ball and a universal joint in place of two of its revolutes)"},
+        BadCase{"four-bar of parallel revolutes", kFourBar,
+                "m.yaml:9:5: joints[3]: 'd' over-constrains the assembly: its condition 'y' "
+                "repeats what 'a', 'b', 'c' already impose; remove it or use a joint with fewer "
+                "conditions (a closed loop of parallel revolute joints, such as a four-bar, needs "
+                "a ball and a universal joint in place of two of its revolutes)"},
+        BadCase{"markers that do not meet",
+                replace(kRigid, "position: [11, 0, 0]", "position: [11.5, 0, 0]"),
+                "m.yaml:22:5: joints[0]: 'weld' is not satisfied by the initial positions: "
+                "condition 'x' is off by 0.5 (box@(-1, 0, 0) is at (10.5, 0, 0) m, beam.n10 at "
+                "(10, 0, 0) m); place the bodies so that the joint closes"},
+        BadCase{"flex joint without stiffness", replace(kRigid, "type: fixed,", "type: flex,"),
+                "m.yaml:22:5: joints[0].stiffness: required key is missing (a number in kN m/deg)"},
+        BadCase{
+            "stiffness on a ball joint",
+            replace(kRigid, "type: fixed,", "type: ball, stiffness: 10,"),
+            "m.yaml:22:41: joints[0].stiffness: only a flex joint takes stiffness; a ball joint "
+            "is rigid"},
+        BadCase{"spring with stiffness and tension table",
+                kRigid + replace(kSpring, "stiffness: 1e3}",
+                                 "stiffness: 1e3, tension_table: [[0, 0], [1, 1e3]]}"),
+                "m.yaml:24:130: connections[0].tension_table: give either stiffness or "
+                "tension_table, not both"},
+        BadCase{"duplicate joint names",
+                kRigid +
+                    "  - {name: weld, type: ball, from: {body: ground, position: [12, 0, 0]}, to: "
+                    "{body: box, position: [1, 0, 0]}}\n",
+                "m.yaml:23:12: joints[1].name: a second joint named 'weld': names must be unique"},
+        BadCase{"body named ground",
+                replace(replace(kRigid, "  box:\n", "  ground:\n"), "face: {body: box",
+                        "face: {body: ground"),
+                "m.yaml:11:3: bodies.ground: 'ground' is reserved for the fixed world frame; give "
+                "the body another name"},
+        // one report per problem: a named marker's problem where it is defined, not again at
+        // each reference; a missing marker reference once; a duplicate name does not hide
+        // the problems of the entry's markers
+        BadCase{"problem of a named marker reported once",
+                replace(kRigid, "tip: {body: beam, node: end}",
+                        "tip: {body: beam, node: end, axis: [1, 0, 0]}"),
+                "m.yaml:17:38: markers.tip.axis: a marker on beam 'beam' is placed by node or "
+                "arc_length; its only axis is the beam's slope"},
+        BadCase{"missing from reported once", replace(kRigid, "from: face, ", ""),
+                "m.yaml:22:5: joints[0].from: required key is missing (a marker name or {body: "
+                "..., ...})"},
+        BadCase{"duplicate name and a dangling body",
+                kRigid +
+                    "  - {name: weld, type: ball, from: {body: ground, position: [12, 0, 0]}, to: "
+                    "{body: bx}}\n",
+                "m.yaml:23:12: joints[1].name: a second joint named 'weld': names must be unique\n"
+                "m.yaml:23:85: joints[1].to.body: no body named 'bx'; did you mean 'box'?"},
+        BadCase{"stiffness of a joint of unknown type",
+                replace(kRigid, "type: fixed,", "type: flx, stiffness: 3,"),
+                "m.yaml:22:24: joints[0].type: unknown value 'flx'; did you mean 'flex'?"},
+        BadCase{"slack given as yes",
+                kRigid + replace(kSpring, "stiffness: 1e3}", "stiffness: 1e3, slack: yes}"),
+                "m.yaml:24:122: connections[0].slack: expected true or false, got 'yes'"},
+        BadCase{"tension table with repeated extension",
+                kRigid + replace(kSpring, "stiffness: 1e3}", "tension_table: [[0, 0], [0, 1]]}"),
+                "m.yaml:24:123: connections[0].tension_table[1]: extensions must increase "
+                "strictly: 0 follows 0"},
+        BadCase{"spring with coincident ends",
+                kRigid + replace(kSpring, "position: [11, 0, 5]}, free_length: 4",
+                                 "position: [10, 0, 0]}, free_length: 0"),
+                "m.yaml:24:5: connections[0]: the end points of spring 's' coincide at the start, "
+                "so the direction of its force is undefined; place its ends apart"},
+        BadCase{"load at a ground marker",
+                kRigid + "loads:\n  - {type: point_force, at: {body: ground, position: [0, 0, 0]}, "
+                         "force: [0, 0, 1]}\n",
+                "m.yaml:24:29: loads[0].at: a load at a ground marker would act on nothing; give a "
+                "marker on a body"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.what;
       for (char& c : name)

@@ -94,7 +94,8 @@ void check_constraints(LoadContext& ctx) {
         mark, path,
         fmt::format("'{}' over-constrains the assembly: its condition '{}' repeats what {} "
                     "already impose{}; remove it or use a joint with fewer conditions (a closed "
-                    "loop of parallel revolute joints needs, e.g., a ball or universal joint)",
+                    "loop of parallel revolute joints, such as a four-bar, needs a ball and a "
+                    "universal joint in place of two of its revolutes)",
                     c->name(), label(red.row),
                     others.empty() ? std::string("earlier constraints")
                                    : fmt::format("{}", fmt::join(others, ", ")),
