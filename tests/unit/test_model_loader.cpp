@@ -420,6 +420,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "m.yaml:22:5: joints[0]: 'weld' is not satisfied by the initial positions: "
                 "condition 'x' is off by 0.5 (box@(-1, 0, 0) is at (10.5, 0, 0) m, beam.n10 at "
                 "(10, 0, 0) m); place the bodies so that the joint closes"},
+        BadCase{"velocities that the joint does not allow",
+                replace(kRigid, "position: [11, 0, 0]",
+                        "position: [11, 0, 0]\n    velocity: [0, 0.25, 0]"),
+                "m.yaml:23:5: joints[0]: 'weld' is not satisfied by the initial velocities: "
+                "condition 'y' changes at 0.25 per second; give the bodies velocities that the "
+                "joint allows"},
         BadCase{"flex joint without stiffness", replace(kRigid, "type: fixed,", "type: flex,"),
                 "m.yaml:22:5: joints[0].stiffness: required key is missing (a number in kN m/deg)"},
         BadCase{
@@ -436,7 +442,8 @@ INSTANTIATE_TEST_SUITE_P(
                 kRigid +
                     "  - {name: weld, type: ball, from: {body: ground, position: [12, 0, 0]}, to: "
                     "{body: box, position: [1, 0, 0]}}\n",
-                "m.yaml:23:12: joints[1].name: a second joint named 'weld': names must be unique"},
+                "m.yaml:23:12: joints[1].name: a joint named 'weld' repeats the name of an earlier "
+                "joint or connection: names must be unique (they name output channels)"},
         BadCase{"body named ground",
                 replace(replace(kRigid, "  box:\n", "  ground:\n"), "face: {body: box",
                         "face: {body: ground"),
@@ -457,7 +464,8 @@ INSTANTIATE_TEST_SUITE_P(
                 kRigid +
                     "  - {name: weld, type: ball, from: {body: ground, position: [12, 0, 0]}, to: "
                     "{body: bx}}\n",
-                "m.yaml:23:12: joints[1].name: a second joint named 'weld': names must be unique\n"
+                "m.yaml:23:12: joints[1].name: a joint named 'weld' repeats the name of an earlier "
+                "joint or connection: names must be unique (they name output channels)\n"
                 "m.yaml:23:85: joints[1].to.body: no body named 'bx'; did you mean 'box'?"},
         BadCase{"stiffness of a joint of unknown type",
                 replace(kRigid, "type: fixed,", "type: flx, stiffness: 3,"),

@@ -88,7 +88,8 @@ double RigidBody::kinetic_energy(const State& state) const {
 
 std::string RigidBody::coordinate_name(Index local) const {
   static const char* names[] = {"x", "y", "z", "e0", "e1", "e2", "e3"};
-  return local >= 0 && local < 7 ? names[local] : fmt::format("q{}", local);
+  return local >= 0 && local < 7 ? fmt::format("{}.{}", name(), names[local])
+                                 : fmt::format("{}.q{}", name(), local);
 }
 
 std::string RigidBody::summary() const {
@@ -205,7 +206,7 @@ void RigidBodyMarker::add_hessian(MarkerVector which, const State&, const Vec3& 
 // ---------------------------------------------------------------------------------------
 
 EulerParameterNormalization::EulerParameterNormalization(const RigidBody& body)
-    : Constraint(body.name() + " |p|"), body_(body) {}
+    : Constraint(body.name() + " Euler parameters"), body_(body) {}
 
 std::vector<Index> EulerParameterNormalization::coordinates() const {
   return {body_.offset() + 3, body_.offset() + 4, body_.offset() + 5, body_.offset() + 6};
@@ -227,7 +228,7 @@ void EulerParameterNormalization::add_multiplier_hessian(const State&,
 }
 
 std::string EulerParameterNormalization::row_name(Index) const {
-  return fmt::format("{}: Euler-parameter normalization", body_.name());
+  return fmt::format("{}: |p|^2 = 1", name());
 }
 
 }  // namespace seaflex

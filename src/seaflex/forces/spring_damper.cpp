@@ -1,5 +1,7 @@
 #include "seaflex/forces/spring_damper.hpp"
 
+#include "seaflex/core/errors.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -93,8 +95,11 @@ void SpringDamper::assemble(const State& state, double, AssemblyTarget& target) 
   pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
   const double L = d.value.norm();
   if (!(L > 0.0))
-    throw std::domain_error(fmt::format(
-        "spring {}: its end points coincide, so the line of action is undefined", name()));
+    throw SolverError(
+        fmt::format("t = {:.6g} s: the end points of spring {} met, so its line of action is "
+                    "undefined",
+                    state.t, name()),
+        state.t);
   if (slack_ && L < free_length_) return;
   const Vec3 n = d.value / L;
   const double Ld = n.dot(d.rate);

@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct LoadContext {
   /// named markers (markers section) that were read without error, and those with errors
   std::map<std::string, YAML::Node> markers;
   std::vector<std::string> failed_markers;
+  /// names of joints and connections, which share the channel namespace
+  std::set<std::string> joint_and_connection_names;
   /// where each constraint was defined (name -> mark, key path), for the model check
   std::map<std::string, std::pair<YAML::Mark, std::string>> constraint_origin;
   /// where each connection was defined (name -> mark, key path)

@@ -56,7 +56,9 @@ PairEntry read_pair(MapReader& r, std::set<std::string>& names, const char* what
     return e;
   }
   if (!names.insert(*name).second) {
-    r.error("name", fmt::format("a second {} named '{}': names must be unique", what, *name));
+    r.error("name", fmt::format("a {} named '{}' repeats the name of an earlier joint or "
+                                "connection: names must be unique (they name output channels)",
+                                what, *name));
     return e;
   }
   e.name = *name;
@@ -90,7 +92,7 @@ void load_joints(const YAML::Node& node, LoadContext& ctx) {
                    fmt::format("expected a list of joints, got {}", describe(node)));
     return;
   }
-  std::set<std::string> names;
+  std::set<std::string>& names = ctx.joint_and_connection_names;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = fmt::format("joints[{}]", i);
     MapReader r(ctx.diag, node[i], path);
@@ -149,7 +151,7 @@ void load_connections(const YAML::Node& node, LoadContext& ctx) {
                    fmt::format("expected a list of connections, got {}", describe(node)));
     return;
   }
-  std::set<std::string> names;
+  std::set<std::string>& names = ctx.joint_and_connection_names;
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string path = fmt::format("connections[{}]", i);
     MapReader r(ctx.diag, node[i], path);

@@ -117,6 +117,16 @@ void check_constraints(LoadContext& ctx) {
                                "off by {:.6g}{}; place the bodies so that the joint closes",
                                c->name(), label(v.row), std::abs(v.value), detail));
   }
+  for (const ViolatedRow& v : audit.velocity_violated) {
+    const Constraint* c = sys.constraint_at_row(v.row);
+    if (!reported.insert(c).second) continue;
+    const auto [mark, path] = origin(c);
+    ctx.diag.error(
+        mark, path,
+        fmt::format("'{}' is not satisfied by the initial velocities: condition '{}' changes at "
+                    "{:.6g} per second; give the bodies velocities that the joint allows",
+                    c->name(), label(v.row), std::abs(v.value)));
+  }
 }
 
 // Springs whose end points coincide at the start: the line of action of the force is
@@ -142,7 +152,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();

@@ -18,8 +18,11 @@ ConstraintAudit audit_constraints(const Dae& dae, const State& state, double vio
   req.matrix = true;
   req.scales = MatrixScales{0.0, 0.0, 0.0};
   dae.evaluate(state, req, eval);
-  for (Index r = 0; r < m; ++r)
+  for (Index r = 0; r < m; ++r) {
     if (!(std::abs(eval.C[r]) <= violation_tolerance)) audit.violated.push_back({r, eval.C[r]});
+    if (!(std::abs(eval.Cdot[r]) <= violation_tolerance))
+      audit.velocity_violated.push_back({r, eval.Cdot[r]});
+  }
 
   // dense C_q on the touched columns only (a riser of 1000 coordinates with joints at its
   // ends touches a few dozen)

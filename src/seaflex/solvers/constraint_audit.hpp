@@ -23,12 +23,13 @@ struct ViolatedRow {
 struct ConstraintAudit {
   std::vector<RedundantRow> redundant;
   std::vector<ViolatedRow> violated;
-  bool ok() const { return redundant.empty() && violated.empty(); }
+  std::vector<ViolatedRow> velocity_violated;  ///< value = C_q v + C_t
+  bool ok() const { return redundant.empty() && violated.empty() && velocity_violated.empty(); }
 };
 
 /// Rows are taken in order; a row whose component orthogonal to the span of the earlier
 /// independent rows is below rank_tolerance of its norm is redundant. A row is violated
-/// when |C| > violation_tolerance.
+/// when |C| > violation_tolerance, its velocity when |C_q v + C_t| > violation_tolerance.
 ConstraintAudit audit_constraints(const Dae& dae, const State& state,
                                   double violation_tolerance = 1e-6, double rank_tolerance = 1e-9);
 
