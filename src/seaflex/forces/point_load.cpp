@@ -25,7 +25,7 @@ void PointLoad::assemble(const State& state, double load_factor, AssemblyTarget&
   const Index n = static_cast<Index>(dofs_.size());
   const bool tangent = target.matrix && target.scales.kq != 0.0;
   // fixed-capacity storage on the stack: no allocation per evaluation
-  Eigen::Matrix<double, kMaxMarkerCoordinates, 1, Eigen::ColMajor, kMaxMarkerCoordinates, 1> Q =
+  Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxMarkerCoordinates, 1> Q =
       VecX::Zero(n);
   MarkerSquare dQ;
   if (tangent) dQ.setZero(n, n);
