@@ -133,11 +133,6 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
         "statics converged: {} load increment(s), {} Newton iterations, relative residual {:.2e}, "
         "constraint violation {:.2e}\n",
         rep.increments, rep.iterations, rep.residual, rep.constraint_violation);
-    if (rep.regularized)
-      fmt::print(
-          "statics: the tangent was singular (a free rotation without stiffness, e.g. a body "
-          "spinning about a hanging line or a beam's axis); Newton steps were regularized and "
-          "that free mode stays where the model placed it\n");
   } catch (const SolverError&) {
     write_single_row(dir / "statics_partial.csv", *model.system, state);
     std::fprintf(stderr, "seaflex: the last converged statics increment is in %s\n",

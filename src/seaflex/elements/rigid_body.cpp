@@ -149,6 +149,11 @@ void RigidBody::add_channels(ChannelList& channels) const {
   }
 }
 
+double RigidBody::step_scale(const State&, const VecX& dq) const {
+  const double dp = dq.segment<4>(offset() + 3).norm();
+  return dp > 0.25 ? 0.25 / dp : 1.0;
+}
+
 std::vector<std::unique_ptr<Constraint>> RigidBody::internal_constraints() const {
   std::vector<std::unique_ptr<Constraint>> list;
   list.push_back(std::make_unique<EulerParameterNormalization>(*this));

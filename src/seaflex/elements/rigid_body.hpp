@@ -42,6 +42,9 @@ class RigidBody : public Body {
   std::string summary() const override;
   void add_channels(ChannelList& channels) const override;
   std::vector<std::unique_ptr<Constraint>> internal_constraints() const override;
+  /// |dp| <= 0.25 per Newton iteration (a turn of about 30 degrees): a full step can carry
+  /// the body onto the mirror branch of its joint conditions (upside down).
+  double step_scale(const State& state, const VecX& dq) const override;
 
   double mass() const { return mass_; }
   const Mat3& inertia() const { return inertia_; }

@@ -59,6 +59,10 @@ class Body {
   /// Appends this body's output channels.
   virtual void add_channels(ChannelList& channels) const = 0;
 
+  /// Largest fraction (<= 1) of a Newton update dq (global vector) that this body accepts
+  /// in one iteration; 1 unless the body's coordinates have a limited safe range.
+  virtual double step_scale(const State& /*state*/, const VecX& /*dq*/) const { return 1.0; }
+
   /// Constraints that belong to the body's parametrization (the Euler-parameter
   /// normalization of a rigid body); the System adds them with the body.
   virtual std::vector<std::unique_ptr<Constraint>> internal_constraints() const { return {}; }

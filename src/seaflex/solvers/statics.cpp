@@ -47,6 +47,7 @@ class NewtonStatics {
     const double scale =
         std::max({eval_.Q.lpNorm<Eigen::Infinity>(), CqT_mu.lpNorm<Eigen::Infinity>(), 1e-12});
     res.force = r_.lpNorm<Eigen::Infinity>() / scale;
+    force_scale_ = scale;
     res.constraint = m_ > 0 ? eval_.C.lpNorm<Eigen::Infinity>() : 0.0;
     res.finite = r_.allFinite() && eval_.C.allFinite();
     r_.cwiseAbs().maxCoeff(&res.worst);
@@ -59,24 +60,25 @@ class NewtonStatics {
   // unloaded structure whose forces are all round-off), with the constraints satisfied.
   bool solve(State& state, double load_factor, bool line_search, int& iterations, Residual& res) {
     failure_.clear();
+    driven_ = 0;
     const double q_scale = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+    q_scale_ = q_scale;
     const double c_tol = 1e-10 * q_scale;
     res = residual(state, load_factor);
     for (int it = 0; it < s_.max_iterations; ++it) {
       if (!res.finite) return false;
       if (res.force <= s_.tolerance && res.constraint <= c_tol) return true;
-      if (regularized_) regularize();
-      if (!solver_.factorize(eval_.kkt.matrix()) && !regularized_) {
-        // a mode without stiffness (a free spin about a hanging line, a rigid body about a
-        // beam's axis, which carries no torsion): Levenberg-Marquardt-style, add a small
-        // stiffness to the Newton matrix only; the residual, hence the equilibrium, is
-        // unchanged, and the free mode, which no force drives, does not move
-        regularized_ = true;
-        unregularized_message_ = solver_.message();
-        regularize();
-        solver_.factorize(eval_.kkt.matrix());
-      }
-      if (!solver_.factorized()) {
+      // Levenberg-Marquardt-style regularization of the Newton matrix only (the residual,
+      // hence the equilibrium, is untouched): K_ii += eps = 1e-14 max |K_jj| + 1e-6 F / L
+      // (F the largest force, L the model's size): below 1e-6 of any stiffness whose
+      // deflection under the loads is smaller than the model, and large enough that the
+      // round-off residual (1e-16 F) moves a free mode by no more than 1e-10 L. (A scaling
+      // by K_ii would stiffen bending modes, whose coordinates also carry EA/l.)
+      // A mode without stiffness that no force drives (a free spin about a hanging line, a
+      // rigid body about a beam's axis, which carries no torsion) then does not move,
+      // instead of taking a step of round-off over a round-off pivot.
+      regularize();
+      if (!solver_.factorize(eval_.kkt.matrix())) {
         failure_ = fmt::format(
             "the tangent matrix is singular ({}): a mechanism, a body without "
             "supports, or coordinates without stiffness",
@@ -91,16 +93,38 @@ class NewtonStatics {
         return false;
       }
       ++iterations;
-      const double update = dx_.head(n_).lpNorm<Eigen::Infinity>();
-      if (regularized_ && eps_ * update > 1e-3 * r_.lpNorm<Eigen::Infinity>()) {
-        // the regularization carries a visible part of the load: a load drives a mode
-        // without stiffness (an undriven free mode does not move, so eps dq stays tiny)
-        failure_ = fmt::format(
-            "the tangent matrix is singular ({}): a mechanism, a body without supports, or "
-            "coordinates without stiffness, driven by the loads",
-            unregularized_message_);
-        return false;
+      {
+        // share of the step's work dq . r that the regularization does: below 1e-10 for a
+        // well-posed step; near 1 when a load drives a mode that only the regularization
+        // holds (an undriven free mode does not move and does no work). A hanging line
+        // gains its pendulum stiffness from its tension after the first steps, so only a
+        // mode that stays without stiffness for three iterations is a mechanism.
+        const auto dq = dx_.head(n_).array();
+        const double reg_work = (eps_.array() * dq * dq).sum();
+        const double work = std::abs(dx_.head(n_).dot(r_));
+        // (with the forces already balanced, only C is being closed: nothing is driven)
+        const bool held = res.force > s_.tolerance && reg_work > 0.5 * work && reg_work > 0.0;
+        driven_ = held ? driven_ + 1 : 0;
+        if (driven_ >= 3) {
+          Index worst = 0;
+          (eps_.array() * dq * dq).maxCoeff(&worst);
+          failure_ = fmt::format(
+              "the tangent matrix is singular in a mode that the loads drive (largest at "
+              "{}): a mechanism, a body without supports, or coordinates without stiffness",
+              dae_.coordinate_name(worst));
+          return false;
+        }
       }
+      // trust region: no coordinate moves by more than a tenth of the model's size in one
+      // iteration (a step held only by the regularization would be astronomical)
+      {
+        const double largest = dx_.head(n_).lpNorm<Eigen::Infinity>();
+        if (largest > 0.1 * q_scale) dx_ *= 0.1 * q_scale / largest;
+      }
+      // attitude steps of rigid bodies are limited (a full Newton step can carry a body
+      // onto the mirror branch of its joint conditions, e.g. upside down)
+      dx_ *= dae_.step_scale(state, dx_.head(n_));
+      const double update = dx_.head(n_).lpNorm<Eigen::Infinity>();
       start_ = state;
       const double g0 = dx_.head(n_).dot(r_);
       take_step(state, 1.0, load_factor, res);
@@ -110,21 +134,19 @@ class NewtonStatics {
     return res.finite && res.force <= s_.tolerance && res.constraint <= c_tol;
   }
 
-  // K += eps I on the coordinate block, eps = 1e-10 of its largest diagonal entry
+  // K_ii += eps_i on the coordinate block (see solve)
   void regularize() {
     SpMat& K = eval_.kkt.matrix();
-    double largest = 0.0;
+    eps_.setZero(n_);
     for (Index c = 0; c < n_; ++c)
       for (SpMat::InnerIterator it(K, c); it; ++it)
-        if (it.row() == c) largest = std::max(largest, std::abs(it.value()));
-    const double eps = 1e-10 * std::max(largest, 1.0);
-    eps_ = eps;
+        if (it.row() == c) eps_[c] = std::abs(it.value());
+    const double q_scale = std::max(1.0, q_scale_);
+    eps_.setConstant(1e-14 * std::max(eps_.maxCoeff(), 1.0) + 1e-6 * force_scale_ / q_scale);
     for (Index c = 0; c < n_; ++c)
       for (SpMat::InnerIterator it(K, c); it; ++it)
-        if (it.row() == c) it.valueRef() += eps;
+        if (it.row() == c) it.valueRef() += eps_[c];
   }
-
-  bool regularized() const { return regularized_; }
 
   // Least-squares multipliers C_q^T mu ~ Q at the start, from [I C_q^T; C_q 0][x; mu] =
   // [Q; 0]: without them the first Newton matrix lacks the d(C_q^T mu)/dq stiffness that
@@ -193,10 +215,11 @@ class NewtonStatics {
   Index n_, m_;
   VecX r_, rhs_, dx_;
   State start_;
-  std::string failure_;  // why the last solve failed, when it was not plain non-convergence
-  bool regularized_ = false;
-  double eps_ = 0.0;
-  std::string unregularized_message_;
+  std::string failure_;       // why the last solve failed, when it was not plain non-convergence
+  VecX eps_;                  // the regularization of the last Newton matrix
+  int driven_ = 0;            // consecutive iterations whose step only the regularization held
+  double force_scale_ = 1.0;  // largest force term at the last residual (N)
+  double q_scale_ = 1.0;      // size of the model (m)
 };
 
 }  // namespace
@@ -231,7 +254,6 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
       ++report.increments;
       report.residual = res.force;
       report.constraint_violation = res.constraint;
-      report.regularized = newton.regularized();
       if (progress) progress(factor, iterations, res.force);
       continue;
     }

@@ -27,9 +27,6 @@ struct StaticsReport {
   int iterations = 0;                 ///< Newton iterations in all
   double residual = 0.0;              ///< final relative force residual
   double constraint_violation = 0.0;  ///< final max |C|
-  /// Newton steps were regularized because the tangent was singular (a free rotation with
-  /// no stiffness, e.g. a body turning about a hanging line); equilibrium is still exact.
-  bool regularized = false;
 };
 
 /// Called after each converged increment: (load factor, iterations, residual).

@@ -50,6 +50,9 @@ class Dae {
   /// Names for messages: "beam.n3.r'.z", "support beam.n0: x".
   virtual std::string coordinate_name(Index i) const = 0;
   virtual std::string constraint_name(Index row) const = 0;
+  /// Largest fraction (<= 1) of a Newton update dq that keeps every body within its safe
+  /// step (a rigid body's attitude turns by at most about 30 degrees); 1 by default.
+  virtual double step_scale(const State& /*state*/, const VecX& /*dq*/) const { return 1.0; }
 };
 
 }  // namespace seaflex

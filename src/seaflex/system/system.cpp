@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace seaflex {
@@ -146,6 +147,12 @@ std::string System::coordinate_name(Index i) const {
     if (i >= b->offset() && i < b->offset() + b->num_coordinates())
       return b->coordinate_name(i - b->offset());
   return fmt::format("q[{}]", i);
+}
+
+double System::step_scale(const State& state, const VecX& dq) const {
+  double scale = 1.0;
+  for (const auto& b : bodies_) scale = std::min(scale, b->step_scale(state, dq));
+  return scale;
 }
 
 const Constraint* System::constraint_at_row(Index row) const {

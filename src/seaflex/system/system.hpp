@@ -54,6 +54,7 @@ class System : public Dae {
   bool constant_mass_kkt() const override;
   std::string coordinate_name(Index i) const override;
   std::string constraint_name(Index row) const override;
+  double step_scale(const State& state, const VecX& dq) const override;
   /// The constraint that owns a row of the multiplier vector; nullptr when out of range.
   const Constraint* constraint_at_row(Index row) const;
 
