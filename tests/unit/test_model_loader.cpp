@@ -426,6 +426,13 @@ INSTANTIATE_TEST_SUITE_P(
                 "m.yaml:23:5: joints[0]: 'weld' is not satisfied by the initial velocities: "
                 "condition 'y' changes at 0.25 per second; give the bodies velocities that the "
                 "joint allows"},
+        BadCase{"flex joint bent at the start",
+                replace(replace(kRigid, "type: fixed,", "type: flex, stiffness: 2,"),
+                        "axis: [1, 0, 0]", "axis: [0, 0, 1]"),
+                "m.yaml:22:5: joints[0]: flex joint 'weld' starts bent by 90 deg: it is neutral "
+                "when the z axes of its markers are parallel (a beam marker's axis is the beam's "
+                "slope, from its start towards its end); give the rigid-body or ground marker an "
+                "axis along the beam"},
         BadCase{"flex joint without stiffness", replace(kRigid, "type: fixed,", "type: flex,"),
                 "m.yaml:22:5: joints[0].stiffness: required key is missing (a number in kN m/deg)"},
         BadCase{

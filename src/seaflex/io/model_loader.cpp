@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <fstream>
+#include <numbers>
 #include <set>
 #include <sstream>
 
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/forces/gravity.hpp"
+#include "seaflex/forces/rotational_spring.hpp"
 #include "seaflex/forces/spring_damper.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/solvers/constraint_audit.hpp"
@@ -68,7 +70,12 @@ namespace {
 void check_constraints(LoadContext& ctx) {
   const System& sys = ctx.system;
   const State s0 = sys.initial_state();
-  const ConstraintAudit audit = audit_constraints(sys, s0);
+  // the input is rounded: positions must close to 1e-6 of the model's size, velocities to
+  // 1e-4 of the largest velocity; smaller gaps are closed by the first projection (RK4)
+  // or Newton step (statics)
+  const double position_tolerance = 1e-6 * std::max(1.0, s0.q.lpNorm<Eigen::Infinity>());
+  const double velocity_tolerance = 1e-4 * std::max(1.0, s0.v.lpNorm<Eigen::Infinity>());
+  const ConstraintAudit audit = audit_constraints(sys, s0, position_tolerance, velocity_tolerance);
   auto origin = [&](const Constraint* c) -> std::pair<YAML::Mark, std::string> {
     if (const auto it = ctx.constraint_origin.find(c->name()); it != ctx.constraint_origin.end())
       return it->second;
@@ -144,6 +151,27 @@ void check_springs(LoadContext& ctx) {
                    fmt::format("the end points of spring '{}' coincide at the start, so the "
                                "direction of its force is undefined; place its ends apart",
                                spring->name()));
+  }
+  // a flex joint is neutral with its axes parallel: a start far from that (often a beam
+  // slope, which points from the beam's start to its end, against a marker axis) would
+  // pre-bend the joint by the spring's full moment
+  for (const auto& f : ctx.system.forces()) {
+    const auto* flex = dynamic_cast<const RotationalSpring*>(f.get());
+    if (!flex) continue;
+    const double angle = flex->angle(s0) * 180.0 / std::numbers::pi;
+    if (angle <= 1.0) continue;
+    std::string joint = flex->name();
+    joint = joint.substr(0, joint.size() - std::string(".spring").size());
+    const auto it = ctx.constraint_origin.find(joint);
+    const auto [mark, path] = it != ctx.constraint_origin.end()
+                                  ? it->second
+                                  : std::pair(YAML::Mark::null_mark(), std::string());
+    ctx.diag.error(mark, path,
+                   fmt::format("flex joint '{}' starts bent by {:.4g} deg: it is neutral when the "
+                               "z axes of its markers are parallel (a beam marker's axis is the "
+                               "beam's slope, from its start towards its end); give the "
+                               "rigid-body or ground marker an axis along the beam",
+                               joint, angle));
   }
 }
 

@@ -6,7 +6,7 @@
 namespace seaflex {
 
 ConstraintAudit audit_constraints(const Dae& dae, const State& state, double violation_tolerance,
-                                  double rank_tolerance) {
+                                  double velocity_tolerance, double rank_tolerance) {
   ConstraintAudit audit;
   const Index n = dae.num_coordinates();
   const Index m = dae.num_constraints();
@@ -20,7 +20,7 @@ ConstraintAudit audit_constraints(const Dae& dae, const State& state, double vio
   dae.evaluate(state, req, eval);
   for (Index r = 0; r < m; ++r) {
     if (!(std::abs(eval.C[r]) <= violation_tolerance)) audit.violated.push_back({r, eval.C[r]});
-    if (!(std::abs(eval.Cdot[r]) <= violation_tolerance))
+    if (!(std::abs(eval.Cdot[r]) <= velocity_tolerance))
       audit.velocity_violated.push_back({r, eval.Cdot[r]});
   }
 

@@ -29,8 +29,9 @@ struct ConstraintAudit {
 
 /// Rows are taken in order; a row whose component orthogonal to the span of the earlier
 /// independent rows is below rank_tolerance of its norm is redundant. A row is violated
-/// when |C| > violation_tolerance, its velocity when |C_q v + C_t| > violation_tolerance.
+/// when |C| > violation_tolerance, its velocity when |C_q v + C_t| > velocity_tolerance.
 ConstraintAudit audit_constraints(const Dae& dae, const State& state,
-                                  double violation_tolerance = 1e-6, double rank_tolerance = 1e-9);
+                                  double violation_tolerance = 1e-6,
+                                  double velocity_tolerance = 1e-6, double rank_tolerance = 1e-9);
 
 }  // namespace seaflex
