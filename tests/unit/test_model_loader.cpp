@@ -484,6 +484,10 @@ INSTANTIATE_TEST_SUITE_P(
                 kRigid + replace(kSpring, "stiffness: 1e3}", "tension_table: [[0, 0], [0, 1]]}"),
                 "m.yaml:24:123: connections[0].tension_table[1]: extensions must increase "
                 "strictly: 0 follows 0"},
+        BadCase{"spring from a body to itself",
+                kRigid + replace(kSpring, "to: {body: ground, position: [11, 0, 5]}",
+                                 "to: {body: box, position: [1, 0, 0]}"),
+                "m.yaml:24:45: connections[0].to: connection 's' connects body 'box' to itself"},
         BadCase{"spring with coincident ends",
                 kRigid + replace(kSpring, "position: [11, 0, 5]}, free_length: 4",
                                  "position: [10, 0, 0]}, free_length: 0"),

@@ -107,7 +107,12 @@ void RotationalSpring::assemble(const State& state, double, AssemblyTarget& targ
   const Vec3 ah = a.value / la, bh = b.value / lb;
   const PairJacobian Jr = (Mat3::Identity() - bh * bh.transpose()) * b.J / lb -
                           (Mat3::Identity() - ah * ah.transpose()) * a.J / la;
-  if (damping_ != 0.0) Q -= damping_ * Jr.transpose() * (Jr * state.v(dofs));
+  if (damping_ != 0.0) {
+    PairVector v(m);  // gathered without a temporary index copy (no allocation per stage)
+    for (Index i = 0; i < m; ++i) v[i] = state.v[dofs[i]];
+    const Vec3 rdot = Jr * v;
+    Q -= damping_ * Jr.transpose() * rdot;
+  }
   if (target.forces)
     for (Index i = 0; i < m; ++i) (*target.forces)[dofs[i]] += Q[i];
   if (!target.matrix) return;

@@ -85,7 +85,8 @@ double SpringDamper::tension(const State& state) const {
   const double L = d.value.norm();
   if (slack_ && L < free_length_) return 0.0;
   const double Ld = L > 0.0 ? d.value.dot(d.rate) / L : 0.0;
-  return law_.tension(L - free_length_) + damping_ * Ld;
+  const double T = law_.tension(L - free_length_) + damping_ * Ld;
+  return slack_ ? std::max(T, 0.0) : T;
 }
 
 void SpringDamper::assemble(const State& state, double, AssemblyTarget& target) const {
@@ -104,7 +105,8 @@ void SpringDamper::assemble(const State& state, double, AssemblyTarget& target) 
   const Vec3 n = d.value / L;
   const double Ld = n.dot(d.rate);
   const double T = law_.tension(L - free_length_) + damping_ * Ld;
-  const Vec3 f = T * n;  // force on a; -f on b: Q = -J_d^T f
+  if (slack_ && T <= 0.0) return;  // a rope cannot push, even while it shortens fast
+  const Vec3 f = T * n;            // force on a; -f on b: Q = -J_d^T f
   const Index m = static_cast<Index>(dofs.size());
   if (target.forces)
     for (Index i = 0; i < m; ++i) (*target.forces)[dofs[i]] -= d.J.col(i).dot(f);

@@ -2,9 +2,9 @@
 // L = |d| and L' = d^ . d', the tension T = T_s(L - L0) + c L' pulls the points together
 // (force T d^ on a, -T d^ on b). T_s is linear, k (L - L0), or a table of tension
 // against extension interpolated linearly and extended with its end slopes. A slack
-// element (rope, sling) carries nothing while L < L0. Exact tangents: the stiffness
-// T_s' d^ d^T + T/L (I - d^ d^T), the damping c d^ d^T, and the attitude terms of
-// rigid-body markers.
+// element (rope, sling) carries nothing while L < L0 and never pushes (T >= 0). Exact
+// tangents: the stiffness T_s' d^ d^T + T/L (I - d^ d^T), the damping c d^ d^T, and the
+// attitude terms of rigid-body markers.
 #pragma once
 
 #include <memory>

@@ -60,6 +60,10 @@ void Rk4Augmented::accelerations(const Dae& dae, const State& state, VecX& a, Ve
 
 void Rk4Augmented::update_multipliers(const Dae& dae, State& state) {
   if (!prepared_) prepare(dae);
+  if (!factor_at(dae, state)) {
+    state.lambda.setConstant(std::nan(""));  // no stale reactions in the output
+    return;
+  }
   accelerations(dae, state, k1v_, state.lambda);
 }
 

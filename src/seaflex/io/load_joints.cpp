@@ -189,6 +189,15 @@ void load_connections(const YAML::Node& node, LoadContext& ctx) {
     auto [from, to] = read_markers(r, entry, ctx);
     r.finish();
     if (!entry.name || !free_length || !law || !damping || !slack || !from || !to) continue;
+    if (from->body() == nullptr && to->body() == nullptr) {
+      r.error("to", fmt::format("connection '{}' connects ground to ground", *entry.name));
+      continue;
+    }
+    if (from->body() == to->body()) {
+      r.error("to", fmt::format("connection '{}' connects body '{}' to itself", *entry.name,
+                                from->body()->name()));
+      continue;
+    }
     ctx.connection_origin[*entry.name] = {node[i].Mark(), path};
     ctx.system.add_force(std::make_unique<SpringDamper>(*entry.name, std::move(from), std::move(to),
                                                         *free_length, std::move(*law), *damping,

@@ -26,9 +26,10 @@ Mat3 skew(const Vec3& a);
 Mat3 rotation_from_euler_parameters(const Vec4& p);
 /// Unit Euler parameters of a rotation matrix (Shepperd's method), e0 >= 0.
 Vec4 euler_parameters_from_rotation(const Mat3& A);
-/// G(p) = [-e, -e~ + e0 I]: omega (global) = 2 G p'.
+/// G(p) = [-e, e~ + e0 I]: omega (world axes) = 2 G p' (Haug's G; Nikravesh writes its
+/// columns in another order of signs).
 Mat34 euler_g(const Vec4& p);
-/// Gbar(p) = [-e, e~ + e0 I]: omega' (body axes) = 2 Gbar p'.
+/// Gbar(p) = [-e, -e~ + e0 I]: omega' (body axes) = 2 Gbar p'.
 Mat34 euler_gbar(const Vec4& p);
 
 /// S_i(u) with (A(p) u)_i = p^T S_i p for every p (i = 0, 1, 2).

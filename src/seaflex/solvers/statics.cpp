@@ -38,7 +38,16 @@ class NewtonStatics {
     req.scales.kq = 1.0;
     req.multiplier_hessian = true;
     req.load_factor = load_factor;
-    dae_.evaluate(state, req, eval_);
+    try {
+      dae_.evaluate(state, req, eval_);
+    } catch (const SolverError& e) {
+      // an element cannot be evaluated at this trial state (a spring's ends met): treat it
+      // as a non-finite residual, so the step is cut or the increment halved
+      failure_ = e.what();
+      Residual res;
+      res.finite = false;
+      return res;
+    }
     VecX lam_full = VecX::Zero(n_ + m_);
     lam_full.tail(m_) = state.lambda;
     const VecX CqT_mu = (eval_.kkt.matrix() * lam_full).head(n_);
