@@ -29,26 +29,33 @@ bool Rk4Augmented::factor_at(const Dae& dae, const State& state) {
   req.matrix = true;
   req.scales.km = 1.0;
   dae.evaluate(state, req, eval_);
-  if (!solver_.factorize(eval_.kkt.matrix())) {
-    failure_ = fmt::format(
-        "the augmented matrix [M C_q^T; C_q 0] is singular ({}): a body "
-        "without mass or redundant constraints",
-        solver_.message());
-    return false;
-  }
-  return true;
+  return factorize_evaluated();
+}
+
+bool Rk4Augmented::factorize_evaluated() {
+  if (solver_.factorize(eval_.kkt.matrix())) return true;
+  failure_ = fmt::format(
+      "the augmented matrix [M C_q^T; C_q 0] is singular ({}): a body "
+      "without mass or redundant constraints",
+      solver_.message());
+  return false;
 }
 
 void Rk4Augmented::accelerations(const Dae& dae, const State& state, VecX& a, VecX& lambda) {
   if (!prepared_) prepare(dae);
-  if (!factor_at(dae, state)) {
-    a = VecX::Constant(n_, std::nan(""));
-    return;
-  }
   DaeRequest req;
   req.forces = true;
   req.constraints = true;
+  const bool refactor = !(constant_kkt_ && solver_.factorized());
+  if (refactor) {  // one pass for Q, C, gamma and [M C_q^T; C_q 0] (rigid bodies, joints)
+    req.matrix = true;
+    req.scales.km = 1.0;
+  }
   dae.evaluate(state, req, eval_);
+  if (refactor && !factorize_evaluated()) {
+    a = VecX::Constant(n_, std::nan(""));
+    return;
+  }
   rhs_.head(n_) = eval_.Q;
   rhs_.tail(m_) = eval_.gamma;  // thesis eq. (133)
   if (stabilization_ == Stabilization::kBaumgarte)

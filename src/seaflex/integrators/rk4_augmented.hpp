@@ -33,6 +33,7 @@ class Rk4Augmented : public Integrator {
  private:
   void prepare(const Dae& dae);
   bool factor_at(const Dae& dae, const State& state);
+  bool factorize_evaluated();  ///< factors eval_.kkt; sets failure_ when singular
   bool project(const Dae& dae, State& state, double& violation);
 
   Stabilization stabilization_;
