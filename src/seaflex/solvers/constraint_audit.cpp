@@ -1,7 +1,9 @@
 #include "seaflex/solvers/constraint_audit.hpp"
 
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseQR>
+#include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace seaflex {
 
@@ -24,46 +26,87 @@ ConstraintAudit audit_constraints(const Dae& dae, const State& state, double vio
       audit.velocity_violated.push_back({r, eval.Cdot[r]});
   }
 
-  // dense C_q on the touched columns only (a riser of 1000 coordinates with joints at its
-  // ends touches a few dozen)
+  // C_q^T as a sparse matrix, one column per constraint row, normalized
   const SpMat& K = eval.kkt.matrix();
-  std::map<Index, Index> column;
-  std::vector<std::vector<std::pair<Index, double>>> rows(m);
+  std::vector<std::vector<std::pair<Index, double>>> rows(m);  // row -> (coordinate, value)
   for (Index c = 0; c < n; ++c)
     for (SpMat::InnerIterator it(K, c); it; ++it)
-      if (it.row() >= n && it.value() != 0.0) {
-        const auto [pos, added] = column.emplace(c, static_cast<Index>(column.size()));
-        rows[it.row() - n].push_back({pos->second, it.value()});
-      }
-  const Index nt = static_cast<Index>(column.size());
-  MatX Cq = MatX::Zero(m, nt);
-  for (Index r = 0; r < m; ++r)
-    for (const auto& [c, v] : rows[r]) Cq(r, c) = v;
-
-  // modified Gram-Schmidt in row order (twice, for orthogonality to round-off)
-  std::vector<VecX> basis;
-  std::vector<Index> independent;
+      if (it.row() >= n && it.value() != 0.0) rows[it.row() - n].push_back({c, it.value()});
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<double> norms(m, 0.0);
   for (Index r = 0; r < m; ++r) {
-    VecX x = Cq.row(r).transpose();
-    const double norm = x.norm();
-    for (int pass = 0; pass < 2; ++pass)
-      for (const VecX& b : basis) x -= b.dot(x) * b;
-    if (norm == 0.0 || x.norm() <= rank_tolerance * norm) {
-      RedundantRow red{r, {}};
-      if (!independent.empty() && norm > 0.0) {
-        // which earlier rows: least squares on the independent rows so far
-        MatX B(nt, static_cast<Index>(independent.size()));
-        for (std::size_t k = 0; k < independent.size(); ++k) B.col(k) = Cq.row(independent[k]);
-        const VecX c = B.colPivHouseholderQr().solve(VecX(Cq.row(r).transpose()));
-        for (std::size_t k = 0; k < independent.size(); ++k)
-          if (std::abs(c[k]) > 1e-8 * c.cwiseAbs().maxCoeff())
-            red.depends_on.push_back(independent[k]);
+    for (const auto& [c, v] : rows[r]) norms[r] += v * v;
+    norms[r] = std::sqrt(norms[r]);
+    for (const auto& [c, v] : rows[r]) triplets.emplace_back(c, r, v / norms[r]);
+  }
+  SpMat A(n, m);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  A.makeCompressed();
+
+  // sparse Householder QR in the natural column order: a column whose part orthogonal to
+  // the earlier columns is below the threshold is deferred to the end, so the columns past
+  // the rank are exactly the rows that repeat earlier ones (as Gram-Schmidt in row order
+  // would find, at the cost of a sparse factorization: a chain of bodies stays banded)
+  Eigen::SparseQR<SpMat, Eigen::NaturalOrdering<int>> qr;
+  qr.setPivotThreshold(rank_tolerance);
+  qr.compute(A);
+  std::vector<bool> dependent(m, false);
+  if (qr.info() == Eigen::Success) {
+    const auto& perm = qr.colsPermutation().indices();
+    for (Index k = qr.rank(); k < m; ++k) dependent[perm[k]] = true;
+  }
+  for (Index r = 0; r < m; ++r)
+    if (norms[r] == 0.0) dependent[r] = true;
+
+  // the earlier rows of each combination (for the first few): least squares on the
+  // independent earlier rows near the row, widened by rows sharing coordinates until the
+  // combination closes
+  int explained = 0;
+  for (Index r = 0; r < m; ++r) {
+    if (!dependent[r]) continue;
+    RedundantRow red{r, {}};
+    if (norms[r] > 0.0 && explained++ < 20) {
+      std::vector<bool> in(m, false);
+      std::vector<Index> near;
+      std::vector<bool> column_seen(n, false);
+      for (const auto& [c, v] : rows[r]) column_seen[c] = true;
+      for (int hop = 0; hop < 64; ++hop) {
+        bool grew = false;
+        for (Index k = 0; k < r; ++k) {
+          if (in[k] || dependent[k]) continue;
+          bool touches = false;
+          for (const auto& [c, v] : rows[k]) touches = touches || column_seen[c];
+          if (!touches) continue;
+          in[k] = true;
+          near.push_back(k);
+          grew = true;
+        }
+        for (Index k : near)
+          for (const auto& [c, v] : rows[k]) column_seen[c] = true;
+        if (near.empty() || !grew) break;
+        // dense on the coordinates these rows touch only
+        std::vector<Index> local(n, -1);
+        Index nl = 0;
+        for (Index k : near)
+          for (const auto& [c, v] : rows[k])
+            if (local[c] < 0) local[c] = nl++;
+        for (const auto& [c, v] : rows[r])
+          if (local[c] < 0) local[c] = nl++;
+        MatX B = MatX::Zero(nl, static_cast<Index>(near.size()));
+        for (std::size_t j = 0; j < near.size(); ++j)
+          for (const auto& [c, v] : rows[near[j]]) B(local[c], static_cast<Index>(j)) = v;
+        VecX target = VecX::Zero(nl);
+        for (const auto& [c, v] : rows[r]) target[local[c]] = v;
+        const VecX coef = B.colPivHouseholderQr().solve(target);
+        if ((B * coef - target).norm() > 1e-8 * norms[r]) continue;  // widen
+        for (std::size_t j = 0; j < near.size(); ++j)
+          if (std::abs(coef[static_cast<Index>(j)]) > 1e-8 * coef.cwiseAbs().maxCoeff())
+            red.depends_on.push_back(near[j]);
+        std::sort(red.depends_on.begin(), red.depends_on.end());
+        break;
       }
-      audit.redundant.push_back(std::move(red));
-      continue;
     }
-    basis.push_back(x / x.norm());
-    independent.push_back(r);
+    audit.redundant.push_back(std::move(red));
   }
   return audit;
 }
