@@ -108,15 +108,14 @@ class NewtonStatics {
         // holds (an undriven free mode does not move and does no work). A hanging line
         // gains its pendulum stiffness from its tension after the first steps, so only a
         // mode that stays without stiffness for three iterations is a mechanism.
-        const auto dq = dx_.head(n_).array();
-        const double reg_work = (eps_.array() * dq * dq).sum();
+        const double reg_work = eps_ * dx_.head(n_).squaredNorm();
         const double work = std::abs(dx_.head(n_).dot(r_));
         // (with the forces already balanced, only C is being closed: nothing is driven)
         const bool held = res.force > s_.tolerance && reg_work > 0.5 * work && reg_work > 0.0;
         driven_ = held ? driven_ + 1 : 0;
         if (driven_ >= 3) {
           Index worst = 0;
-          (eps_.array() * dq * dq).maxCoeff(&worst);
+          dx_.head(n_).cwiseAbs().maxCoeff(&worst);
           failure_ = fmt::format(
               "the tangent matrix is singular in a mode that the loads drive (largest at "
               "{}): a mechanism, a body without supports, or coordinates without stiffness",
@@ -143,18 +142,17 @@ class NewtonStatics {
     return res.finite && res.force <= s_.tolerance && res.constraint <= c_tol;
   }
 
-  // K_ii += eps_i on the coordinate block (see solve)
+  // K_ii += eps on the coordinate block (see solve)
   void regularize() {
     SpMat& K = eval_.kkt.matrix();
-    eps_.setZero(n_);
+    double largest = 1.0;
     for (Index c = 0; c < n_; ++c)
       for (SpMat::InnerIterator it(K, c); it; ++it)
-        if (it.row() == c) eps_[c] = std::abs(it.value());
-    const double q_scale = std::max(1.0, q_scale_);
-    eps_.setConstant(1e-14 * std::max(eps_.maxCoeff(), 1.0) + 1e-6 * force_scale_ / q_scale);
+        if (it.row() == c) largest = std::max(largest, std::abs(it.value()));
+    eps_ = 1e-14 * largest + 1e-6 * force_scale_ / std::max(1.0, q_scale_);
     for (Index c = 0; c < n_; ++c)
       for (SpMat::InnerIterator it(K, c); it; ++it)
-        if (it.row() == c) it.valueRef() += eps_[c];
+        if (it.row() == c) it.valueRef() += eps_;
   }
 
   // Least-squares multipliers C_q^T mu ~ Q at the start, from [I C_q^T; C_q 0][x; mu] =
@@ -225,7 +223,7 @@ class NewtonStatics {
   VecX r_, rhs_, dx_;
   State start_;
   std::string failure_;       // why the last solve failed, when it was not plain non-convergence
-  VecX eps_;                  // the regularization of the last Newton matrix
+  double eps_ = 0.0;          // the regularization of the last Newton matrix
   int driven_ = 0;            // consecutive iterations whose step only the regularization held
   double force_scale_ = 1.0;  // largest force term at the last residual (N)
   double q_scale_ = 1.0;      // size of the model (m)
