@@ -64,9 +64,8 @@ void make_output_dir(const fs::path& dir) {
         "cannot create the output directory: " + (ec ? ec.message() : "not a directory")}});
 }
 
-void write_single_row(const fs::path& path, const System& system, const State& state) {
+void write_single_row(const fs::path& path, const ChannelList& channels, const State& state) {
   io::CsvRecorder csv(path);
-  const ChannelList channels = system.channels();
   std::vector<std::string> names;
   std::vector<double> values;
   for (const auto& c : channels) {
@@ -75,6 +74,13 @@ void write_single_row(const fs::path& path, const System& system, const State& s
   }
   csv.begin(names);
   csv.record(state.t, values);
+}
+
+// loads the model and prints its warnings (they do not stop the run)
+io::Model load_model(const std::string& file) {
+  io::Model model = io::load_model_file(file);
+  for (const auto& w : model.warnings) fmt::print(stderr, "warning: {}\n", w);
+  return model;
 }
 
 void print_summary(const io::Model& model) {
@@ -134,24 +140,24 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
         "constraint violation {:.2e}\n",
         rep.increments, rep.iterations, rep.residual, rep.constraint_violation);
   } catch (const SolverError&) {
-    write_single_row(dir / "statics_partial.csv", *model.system, state);
+    write_single_row(dir / "statics_partial.csv", io::model_channels(model), state);
     std::fprintf(stderr, "seaflex: the last converged statics increment is in %s\n",
                  (dir / "statics_partial.csv").c_str());
     throw;
   }
-  write_single_row(dir / "statics.csv", *model.system, state);
+  write_single_row(dir / "statics.csv", io::model_channels(model), state);
   return state;
 }
 
 int cmd_check(const std::string& file) {
-  const io::Model model = io::load_model_file(file);
+  const io::Model model = load_model(file);
   print_summary(model);
   fmt::print("model OK\n");
   return 0;
 }
 
 int cmd_statics(const std::string& file, const fs::path& dir, bool quiet) {
-  const io::Model model = io::load_model_file(file);
+  const io::Model model = load_model(file);
   make_output_dir(dir);
   run_statics(model, dir, quiet);
   fmt::print("wrote {}\n", (dir / "statics.csv").string());
@@ -159,7 +165,7 @@ int cmd_statics(const std::string& file, const fs::path& dir, bool quiet) {
 }
 
 int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
-  const io::Model model = io::load_model_file(file);
+  const io::Model model = load_model(file);
   if (!model.dynamics)
     throw InputError({Diagnostic{file, 0, 0, "dynamics",
                                  "'seaflex run' needs a dynamics section (time_step, duration); "
@@ -169,7 +175,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
   State state =
       d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
   auto integrator = d.make_integrator();
-  Simulation sim(*model.system, model.system->channels(), *integrator,
+  Simulation sim(*model.system, io::model_channels(model), *integrator,
                  SimulationSettings{d.duration, d.time_step, d.output_interval});
   io::CsvRecorder csv(dir / "timeseries.csv");
   sim.add_recorder(csv);
@@ -194,7 +200,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
 
 int cmd_modes(const std::string& file, const fs::path& dir, int count, bool about_initial,
               bool quiet) {
-  const io::Model model = io::load_model_file(file);
+  const io::Model model = load_model(file);
   make_output_dir(dir);
   const State state =
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);

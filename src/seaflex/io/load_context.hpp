@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "seaflex/elements/ancf_beam.hpp"
+#include "seaflex/forces/hydro_matrices.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/yaml_reader.hpp"
 
@@ -78,6 +79,13 @@ void load_connections(const YAML::Node& node, LoadContext& ctx);
 void load_supports(const YAML::Node& node, LoadContext& ctx);
 void load_loads(const YAML::Node& node, LoadContext& ctx);
 void load_statics(const YAML::Node& node, LoadContext& ctx);
+/// environment.water, waves, current, wave_probes (load_ocean.cpp); g = |gravity|
+void load_water(MapReader& env, LoadContext& ctx, double g);
+/// hydrodynamics.<body>.bem (load_bem.cpp): adds the BEM forces, and A(inf) and the
+/// hydrostatic matrix to set
+void load_bem(MapReader& bem, const RigidBody& body, HydroMatrixSet& set, LoadContext& ctx);
+/// the hydrodynamics section (load_ocean.cpp)
+void load_hydrodynamics(const YAML::Node& node, LoadContext& ctx);
 void load_dynamics(const YAML::Node& node, LoadContext& ctx);
 
 /// keys of a registry, for messages

@@ -198,6 +198,7 @@ Model load(const YAML::Node& root, const std::string& name) {
         model.gravity = Vec3(0, 0, *m > 0.0 ? -*m : 0.0);
       }
     }
+    load_water(r, ctx, model.gravity.norm());
     r.finish();
   }
 
@@ -208,6 +209,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   if (const YAML::Node n = top.get("joints"); n.IsDefined()) load_joints(n, ctx);
   if (const YAML::Node n = top.get("connections"); n.IsDefined()) load_connections(n, ctx);
   if (const YAML::Node n = top.get("loads"); n.IsDefined()) load_loads(n, ctx);
+  if (const YAML::Node n = top.get("hydrodynamics"); n.IsDefined()) load_hydrodynamics(n, ctx);
   if (model.gravity.norm() > 0.0) {
     std::vector<const Body*> all;
     for (const auto& b : model.system->bodies()) all.push_back(b.get());
@@ -236,6 +238,16 @@ YAML::Node parse(const std::string& text, const std::string& name) {
 }
 
 }  // namespace
+
+ChannelList model_channels(const Model& model) {
+  ChannelList list = model.system->channels();
+  if (model.ocean)
+    for (const auto& [name, p] : model.wave_probes)
+      list.push_back({name, [ocean = model.ocean, p](const State& s) {
+                        return ocean->elevation(p.x(), p.y(), s.t);
+                      }});
+  return list;
+}
 
 Model load_model_text(const std::string& text, const std::string& name) {
   const YAML::Node root = parse(text, name);

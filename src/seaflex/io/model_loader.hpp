@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "seaflex/hydro/ocean.hpp"
 #include "seaflex/integrators/integrator.hpp"
 #include "seaflex/solvers/statics.hpp"
 #include "seaflex/system/system.hpp"
@@ -29,9 +30,18 @@ struct Model {
   std::string title;
   std::unique_ptr<System> system;
   Vec3 gravity = Vec3::Zero();
+  /// The sea (environment.water, waves, current); null when the model has no water.
+  std::shared_ptr<const hydro::Ocean> ocean;
+  /// Notes for the user that do not stop the run (a wave frequency outside a BEM range).
+  std::vector<std::string> warnings;
+  /// Wave elevation outputs: channel name and the point (x, y) where it is taken.
+  std::vector<std::pair<std::string, Vec3>> wave_probes;
   StaticsSettings statics;
   std::optional<DynamicsSettings> dynamics;
 };
+
+/// The system's channels followed by the model's own (wave elevation probes).
+ChannelList model_channels(const Model& model);
 
 /// Loads and validates a model file. Throws InputError listing every problem.
 Model load_model_file(const std::string& path);

@@ -35,6 +35,17 @@ class Force {
   /// Appends output channels (tension, angle); none by default.
   virtual void add_channels(ChannelList& /*channels*/) const {}
 
+  /// False when the force adds a mass matrix that depends on the state (added mass in
+  /// the direction normal to a beam or in a body's current axes): the integrator must
+  /// then refactor the augmented matrix.
+  virtual bool constant_mass() const { return true; }
+
+  /// Memory (a radiation force's velocity history): called once with the initial state
+  /// of a time simulation, and after every accepted time step. RK4 stages and Newton
+  /// iterations in between only evaluate. Nothing by default.
+  virtual void start(const State& /*state*/) {}
+  virtual void accept_step(const State& /*state*/) {}
+
  private:
   std::string name_;
 };

@@ -20,7 +20,7 @@ Index worst_coordinate(const State& s) {
 }
 }  // namespace
 
-Simulation::Simulation(const Dae& dae, ChannelList channels, Integrator& integrator,
+Simulation::Simulation(Dae& dae, ChannelList channels, Integrator& integrator,
                        SimulationSettings settings)
     : dae_(dae), channels_(std::move(channels)), integrator_(integrator), settings_(settings) {
   if (!(settings_.time_step > 0.0) || !(settings_.duration > 0.0))
@@ -44,6 +44,7 @@ SimulationReport Simulation::run(State& state) {
   const double t0 = state.t;
   const long steps = std::lround(settings_.duration / settings_.time_step);
   SimulationReport report;
+  dae_.start(state);
   record(state);
   // state scale for the divergence test
   const double scale = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
@@ -70,6 +71,7 @@ SimulationReport Simulation::run(State& state) {
                         settings_.time_step, integrator_.name()),
             state.t);
       }
+      dae_.accept_step(state);
       if (k % every_ == 0 || k == steps) {
         record(state);
         if (progress_) progress_(state.t - t0, settings_.duration);

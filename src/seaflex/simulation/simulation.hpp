@@ -30,7 +30,7 @@ using SimulationProgress = std::function<void(double, double)>;
 
 class Simulation {
  public:
-  Simulation(const Dae& dae, ChannelList channels, Integrator& integrator,
+  Simulation(Dae& dae, ChannelList channels, Integrator& integrator,
              SimulationSettings settings);
 
   void add_recorder(Recorder& recorder) { recorders_.push_back(&recorder); }
@@ -46,7 +46,7 @@ class Simulation {
  private:
   void record(State& state);
 
-  const Dae& dae_;
+  Dae& dae_;
   ChannelList channels_;
   Integrator& integrator_;
   SimulationSettings settings_;

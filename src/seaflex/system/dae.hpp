@@ -53,6 +53,10 @@ class Dae {
   /// Largest fraction (<= 1) of a Newton update dq that keeps every body within its safe
   /// step (a rigid body's attitude turns by at most about 30 degrees); 1 by default.
   virtual double step_scale(const State& /*state*/, const VecX& /*dq*/) const { return 1.0; }
+  /// Forces with memory: start(state) once before a time simulation, accept_step(state)
+  /// after every accepted step (DESIGN: memory enters only through z or accept_step).
+  virtual void start(const State& /*state*/) {}
+  virtual void accept_step(const State& /*state*/) {}
 };
 
 }  // namespace seaflex

@@ -137,9 +137,19 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
 bool System::constant_mass_kkt() const {
   for (const auto& b : bodies_)
     if (!b->constant_mass()) return false;
+  for (const auto& f : forces_)
+    if (!f->constant_mass()) return false;
   for (const auto& c : constraints_)
     if (!c->is_linear()) return false;
   return true;
+}
+
+void System::start(const State& state) {
+  for (auto& f : forces_) f->start(state);
+}
+
+void System::accept_step(const State& state) {
+  for (auto& f : forces_) f->accept_step(state);
 }
 
 std::string System::coordinate_name(Index i) const {

@@ -55,6 +55,8 @@ class System : public Dae {
   std::string coordinate_name(Index i) const override;
   std::string constraint_name(Index row) const override;
   double step_scale(const State& state, const VecX& dq) const override;
+  void start(const State& state) override;
+  void accept_step(const State& state) override;
   /// The constraint that owns a row of the multiplier vector; nullptr when out of range.
   const Constraint* constraint_at_row(Index row) const;
 

@@ -1,0 +1,165 @@
+#include "seaflex/forces/morison_beam.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace seaflex {
+
+namespace {
+using ancf_cable::Mat12;
+using ancf_cable::Vec12;
+using ancf_cable::Vec4;
+
+// 12x12 kron(s s^T, B): block (i, j) = s_i s_j B
+void add_kron(Mat12& K, const Vec4& a, const Vec4& b, const Mat3& B, double scale) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) K.block<3, 3>(3 * i, 3 * j) += (scale * a[i] * b[j]) * B;
+}
+}  // namespace
+
+MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
+                         MorisonBeamCoefficients coefficients,
+                         std::shared_ptr<const hydro::Ocean> ocean)
+    : Force(std::move(name)), beam_(beam), coefficients_(coefficients),
+      ocean_(std::move(ocean)), rule_(math::gauss_legendre_unit(coefficients.gauss_points)) {}
+
+void MorisonBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
+  blocks_.clear();
+  for (int k = 0; k < beam_.num_elements(); ++k) {
+    std::vector<Index> dofs(12);
+    for (int i = 0; i < 12; ++i) dofs[i] = beam_.node_index(k) + i;
+    blocks_.push_back(matrix.declare_block(dofs, dofs));
+  }
+}
+
+std::pair<double, double> MorisonBeam::wet_interval(const State& state, int k) const {
+  const Vec12 e = beam_.element_coordinates(state.q, k);
+  const double l = beam_.element_length(k);
+  auto above = [&](double xi) {
+    const Vec3 r = ancf_cable::as_nodes(e) * ancf_cable::shape(xi, l);  // thesis eq. (3)
+    return r.z() - ocean_->elevation(r.x(), r.y(), state.t);
+  };
+  const double f0 = above(0.0), f1 = above(1.0);
+  if (f0 <= 0.0 && f1 <= 0.0) return {0.0, 1.0};
+  if (f0 > 0.0 && f1 > 0.0) return {1.0, 0.0};
+  double lo = 0.0, hi = 1.0, flo = f0, fhi = f1, xi = 0.5;
+  int side = 0;
+  for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {  // Illinois false position
+    xi = (lo * fhi - hi * flo) / (fhi - flo);
+    const double fx = above(xi);
+    if ((fx <= 0.0) == (flo <= 0.0)) {
+      lo = xi;
+      flo = fx;
+      if (side == -1) fhi *= 0.5;
+      side = -1;
+    } else {
+      hi = xi;
+      fhi = fx;
+      if (side == 1) flo *= 0.5;
+      side = 1;
+    }
+  }
+  return f0 <= 0.0 ? std::pair{0.0, xi} : std::pair{xi, 1.0};
+}
+
+MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, const Vec3& rdot,
+                                               double t, double load_factor,
+                                               bool derivatives, bool with_buoyancy) const {
+  const MorisonBeamCoefficients& c = coefficients_;
+  const double rho = ocean_->rho();
+  const double D = c.diameter;
+  const double area = 0.25 * std::numbers::pi * D * D;
+  PointLoad out;
+  const hydro::FluidPoint fl = ocean_->fluid(r, t);
+  const double stretch = rp.norm();
+  const Vec3 tt = rp / stretch;
+  const Mat3 P = Mat3::Identity() - tt * tt.transpose();
+  const Vec3 u = fl.velocity - rdot;
+  const double ua = tt.dot(u);
+  const Vec3 un = u - ua * tt;
+  const double unn = un.norm();
+  const double cd = 0.5 * rho * c.cd * D;                              // thesis eq. (176)
+  const double cax = 0.5 * rho * c.cd_axial * std::numbers::pi * D;
+  const double ci = rho * c.cm * area;
+  const Vec3 an = fl.acceleration - tt.dot(fl.acceleration) * tt;
+  out.f = cd * unn * un + cax * std::abs(ua) * ua * tt + ci * an;
+  if (c.buoyancy && with_buoyancy) out.f.z() += load_factor * rho * ocean_->g() * area;
+  if (!derivatives) return out;
+  // d f / d u_n of the drag, and the derivatives through u = U - r_dot and t = r'/|r'|
+  Mat3 Dn = cd * unn * Mat3::Identity();
+  if (unn > 0.0) Dn += (cd / unn) * un * un.transpose();
+  const Mat3 Da = cax * 2.0 * std::abs(ua) * tt * tt.transpose();
+  out.df_dv = -(Dn * P + Da);
+  const Mat3 dt_drp = P / stretch;
+  const Mat3 dun_dt = -(tt * u.transpose() + ua * Mat3::Identity());
+  const Mat3 dfa_dt = cax * (2.0 * std::abs(ua) * tt * u.transpose() + std::abs(ua) * ua * Mat3::Identity());
+  const Mat3 dfi_dt = -ci * (tt * fl.acceleration.transpose() +
+                             tt.dot(fl.acceleration) * Mat3::Identity());
+  out.df_drp = (Dn * dun_dt + dfa_dt + dfi_dt) * dt_drp;
+  return out;
+}
+
+void MorisonBeam::assemble(const State& state, double load_factor,
+                           AssemblyTarget& target) const {
+  const MorisonBeamCoefficients& c = coefficients_;
+  const MatrixScales& s = target.scales;
+  const bool want_matrix = target.matrix != nullptr && s.any();
+  const double area_i = 0.25 * std::numbers::pi * c.internal_diameter * c.internal_diameter;
+  const double m_int = c.internal_density * area_i;  // contents' mass per length
+  const double ca_mass = ocean_->rho() * c.ca * 0.25 * std::numbers::pi * c.diameter * c.diameter;
+  Mat12 K;
+  for (int k = 0; k < beam_.num_elements(); ++k) {
+    const double l = beam_.element_length(k);
+    const Vec12 e = beam_.element_coordinates(state.q, k);
+    const Vec12 ed = state.v.segment<12>(beam_.node_index(k));
+    const auto E = ancf_cable::as_nodes(e);
+    const auto Ed = ancf_cable::as_nodes(ed);
+    if (want_matrix) K.setZero();
+    // contents: weight and mass over the whole element
+    if (m_int > 0.0) {
+      if (target.forces)
+        target.forces->segment<12>(beam_.node_index(k)) +=
+            ancf_cable::uniform_load(Vec3(0, 0, -load_factor * m_int * ocean_->g()), l);
+      if (want_matrix && s.km != 0.0) K += s.km * ancf_cable::mass_matrix(m_int, l);
+    }
+    const auto [xi0, xi1] = wet_interval(state, k);
+    for (std::size_t g = 0; xi1 > xi0 && g < rule_.points.size(); ++g) {
+      const double xi = xi0 + (xi1 - xi0) * rule_.points[g];
+      const double dx = l * (xi1 - xi0) * rule_.weights[g];
+      const Vec4 sh = ancf_cable::shape(xi, l);
+      const Vec4 shx = ancf_cable::shape_dx(xi, l);
+      const Vec3 r = E * sh, rp = E * shx, rdot = Ed * sh;
+      const bool deriv = want_matrix && (s.kq != 0.0 || s.kv != 0.0);
+      const PointLoad pl = point_load(r, rp, rdot, state.t, load_factor, deriv);
+      if (target.forces) {
+        auto Q = target.forces->segment<12>(beam_.node_index(k));
+        for (int i = 0; i < 4; ++i) Q.segment<3>(3 * i) += (dx * sh[i]) * pl.f;  // eq. (177)
+      }
+      if (!want_matrix) continue;
+      if (s.km != 0.0 && ca_mass != 0.0) {
+        const Vec3 tt = rp.normalized();
+        add_kron(K, sh, sh, ca_mass * (Mat3::Identity() - tt * tt.transpose()), s.km * dx);
+      }
+      if (s.kv != 0.0) add_kron(K, sh, sh, pl.df_dv, -s.kv * dx);
+      if (s.kq != 0.0) {
+        add_kron(K, sh, shx, pl.df_drp, -s.kq * dx);
+        // position: central differences of the fluid field (current profile, waves)
+        Mat3 df_dr;
+        const double h = 1e-4;
+        for (int j = 0; j < 3; ++j) {
+          Vec3 rp_ = r, rm_ = r;
+          rp_[j] += h;
+          rm_[j] -= h;
+          // buoyancy is uniform where wet: left out, so the surface is no step
+          df_dr.col(j) = (point_load(rp_, rp, rdot, state.t, load_factor, false, false).f -
+                          point_load(rm_, rp, rdot, state.t, load_factor, false, false).f) /
+                         (2.0 * h);
+        }
+        add_kron(K, sh, sh, df_dr, -s.kq * dx);
+      }
+    }
+    if (want_matrix) target.matrix->add(blocks_[k], K);
+  }
+}
+
+}  // namespace seaflex

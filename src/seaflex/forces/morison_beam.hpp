@@ -1,0 +1,76 @@
+// Morison loads on an ANCF beam (thesis eq. 176, applied through the shape functions as
+// in eq. 177: Q = int S^T f dx, Gauss-integrated along each element's wet part). Per
+// unit reference length, at a point r = S e with axis t = r'/|r'|:
+//   drag          f_d = 1/2 rho Cd D |u_n| u_n,     u = fluid velocity - r_dot (relative)
+//   axial drag    f_a = 1/2 rho Cd_ax pi D |u_a| u_a t,   u_a = t . u
+//   fluid inertia f_i = rho Cm A a_n                 (a_n normal part of the fluid
+//                                                     acceleration; A = pi D^2/4)
+//   added mass    -rho Ca A (I - t t^T) r_ddot       (in the mass matrix:
+//                                                     int S^T rho Ca A (I - t t^T) S dx)
+//   buoyancy      rho g A e_z on the submerged part  (external pressure resultant; the
+//                                                     tension reported is the effective
+//                                                     tension)
+//   internal fluid: weight -rho_i g A_i e_z and mass rho_i A_i on the whole beam.
+// Partially submerged elements are integrated over the part below the instantaneous
+// surface (the crossing found by false position); an element whose two ends are both
+// under water is taken as wholly wet.
+// Tangents: dQ/dv exact; dQ/dq exact in the axis t, and by central differences of the
+// fluid field in the position; the motion of the wet end and the state dependence of the
+// added mass matrix are left out of the tangent (they matter only to implicit solvers'
+// convergence rate, never to the solution).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "seaflex/elements/ancf_beam.hpp"
+#include "seaflex/hydro/ocean.hpp"
+#include "seaflex/math/gauss_legendre.hpp"
+#include "seaflex/model/force.hpp"
+
+namespace seaflex {
+
+struct MorisonBeamCoefficients {
+  double diameter = 0.0;          ///< hydrodynamic diameter D (m)
+  double cd = 0.0;                ///< normal drag coefficient
+  double cd_axial = 0.0;          ///< axial drag coefficient (on the perimeter pi D)
+  double ca = 0.0;                ///< normal added mass coefficient
+  double cm = 0.0;                ///< inertia coefficient on the fluid acceleration
+  bool buoyancy = true;           ///< buoyancy of the submerged part
+  double internal_density = 0.0;  ///< rho_i of the contents (kg/m^3), 0 = empty
+  double internal_diameter = 0.0; ///< D_i of the contents (m)
+  int gauss_points = 5;           ///< per element (wet part)
+};
+
+class MorisonBeam : public Force {
+ public:
+  MorisonBeam(std::string name, const AncfBeam& beam, MorisonBeamCoefficients coefficients,
+              std::shared_ptr<const hydro::Ocean> ocean);
+
+  void declare_blocks(math::SparseBlockAssembler& matrix) override;
+  void assemble(const State& state, double load_factor, AssemblyTarget& target) const override;
+  double potential_energy(const State&) const override { return 0.0; }
+  bool constant_mass() const override { return coefficients_.ca == 0.0; }
+
+  const MorisonBeamCoefficients& coefficients() const { return coefficients_; }
+  /// Wet part [xi0, xi1] of element k; xi1 <= xi0 when dry.
+  std::pair<double, double> wet_interval(const State& state, int k) const;
+
+ private:
+  /// Load per unit reference length at one point, and its derivatives.
+  struct PointLoad {
+    Vec3 f = Vec3::Zero();
+    Mat3 df_dv = Mat3::Zero();   // d f / d r_dot
+    Mat3 df_drp = Mat3::Zero();  // d f / d r'
+  };
+  PointLoad point_load(const Vec3& r, const Vec3& rp, const Vec3& rdot, double t,
+                       double load_factor, bool derivatives, bool with_buoyancy = true) const;
+
+  const AncfBeam& beam_;
+  MorisonBeamCoefficients coefficients_;
+  std::shared_ptr<const hydro::Ocean> ocean_;
+  math::QuadratureRule rule_;
+  std::vector<math::BlockId> blocks_;
+};
+
+}  // namespace seaflex

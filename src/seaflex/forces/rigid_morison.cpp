@@ -1,0 +1,117 @@
+#include "seaflex/forces/rigid_morison.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "seaflex/math/gauss_legendre.hpp"
+#include "seaflex/math/rotation.hpp"
+
+namespace seaflex {
+
+RigidMorison::RigidMorison(std::string name, const RigidBody& body,
+                           std::vector<MorisonMember> members,
+                           std::shared_ptr<const hydro::Ocean> ocean)
+    : RigidBodyLoad(std::move(name), body), members_(std::move(members)),
+      ocean_(std::move(ocean)) {
+  for (const auto& mem : members_) {
+    if (mem.ca != 0.0) has_added_mass_ = true;
+    rules_.push_back(math::gauss_legendre_unit(mem.strips));
+  }
+}
+
+std::pair<double, double> RigidMorison::wet_interval(const MorisonMember& mem,
+                                                     const RigidBodyMotion& m) const {
+  const Vec3 A = m.point(mem.a), B = m.point(mem.b);
+  // height above the instantaneous surface along the member, s in [0, 1]
+  auto above = [&](double s) {
+    const Vec3 x = A + s * (B - A);
+    return x.z() - ocean_->elevation(x.x(), x.y(), m.t);
+  };
+  const double f0 = above(0.0), f1 = above(1.0);
+  if (f0 <= 0.0 && f1 <= 0.0) return {0.0, 1.0};
+  if (f0 > 0.0 && f1 > 0.0) return {1.0, 0.0};
+  // one crossing: Illinois false position to 1e-10 of the member's length
+  double lo = 0.0, hi = 1.0, flo = f0, fhi = f1;
+  int side = 0;
+  double s = 0.5;
+  for (int it = 0; it < 60 && hi - lo > 1e-10; ++it) {
+    s = (lo * fhi - hi * flo) / (fhi - flo);
+    const double fs = above(s);
+    if ((fs <= 0.0) == (flo <= 0.0)) {
+      lo = s;
+      flo = fs;
+      if (side == -1) fhi *= 0.5;
+      side = -1;
+    } else {
+      hi = s;
+      fhi = fs;
+      if (side == 1) flo *= 0.5;
+      side = 1;
+    }
+  }
+  return f0 <= 0.0 ? std::pair{0.0, s} : std::pair{s, 1.0};
+}
+
+Wrench RigidMorison::wrench(const RigidBodyMotion& m) const {
+  Wrench W;
+  const double rho = ocean_->rho();
+  for (const auto& mem : members_) {
+    const auto [s0, s1] = wet_interval(mem, m);
+    if (s1 <= s0) continue;
+    const Vec3 axis_b = mem.b - mem.a;
+    const double L = axis_b.norm();
+    const Vec3 t = (m.R * axis_b).normalized();
+    const double area = 0.25 * std::numbers::pi * mem.diameter * mem.diameter;
+    const math::QuadratureRule& rule = rules_[&mem - members_.data()];
+    for (std::size_t g = 0; g < rule.points.size(); ++g) {
+      const double s = s0 + (s1 - s0) * rule.points[g];
+      const double ds = L * (s1 - s0) * rule.weights[g];
+      const Vec3 u_body = mem.a + s * axis_b;
+      const Vec3 x = m.point(u_body);
+      const hydro::FluidPoint fl = ocean_->fluid(x, m.t);
+      const Vec3 u = fl.velocity - m.point_velocity(u_body);
+      const double ua = u.dot(t);
+      const Vec3 un = u - ua * t;
+      Vec3 f = 0.5 * rho * mem.cd * mem.diameter * un.norm() * un;  // thesis eq. (176), drag
+      f += 0.5 * rho * mem.cd_axial * std::numbers::pi * mem.diameter * std::abs(ua) * ua * t;
+      const Vec3 an = fl.acceleration - fl.acceleration.dot(t) * t;
+      f += rho * mem.cm * area * an;  // thesis eq. (176), inertia
+      if (mem.ca != 0.0) {
+        // the part of -rho Ca A (I - t t^T) a_s not in the mass matrix: w x (w x rho)
+        const Vec3 arm = m.R * u_body;
+        const Vec3 centripetal = m.w.cross(m.w.cross(arm));
+        f -= rho * mem.ca * area * (centripetal - centripetal.dot(t) * t);
+      }
+      W.add_at(f * ds, x, m.r);
+    }
+  }
+  return W;
+}
+
+Mat6 RigidMorison::added_mass(const RigidBodyMotion& m) const {
+  Mat6 M = Mat6::Zero();
+  const double rho = ocean_->rho();
+  for (const auto& mem : members_) {
+    if (mem.ca == 0.0) continue;
+    const auto [s0, s1] = wet_interval(mem, m);
+    if (s1 <= s0) continue;
+    const Vec3 axis_b = mem.b - mem.a;
+    const double L = axis_b.norm();
+    const Vec3 t = (m.R * axis_b).normalized();
+    const double area = 0.25 * std::numbers::pi * mem.diameter * mem.diameter;
+    const Mat3 P = rho * mem.ca * area * (Mat3::Identity() - t * t.transpose());
+    const math::QuadratureRule& rule = rules_[&mem - members_.data()];
+    for (std::size_t g = 0; g < rule.points.size(); ++g) {
+      const double s = s0 + (s1 - s0) * rule.points[g];
+      const double ds = L * (s1 - s0) * rule.weights[g];
+      // a_point = a_cg - skew(arm) alpha + ...: T = [I, -skew(arm)]
+      Eigen::Matrix<double, 3, 6> T;
+      T.leftCols<3>().setIdentity();
+      T.rightCols<3>() = -math::skew(m.R * (mem.a + s * axis_b));
+      M += ds * T.transpose() * P * T;
+    }
+  }
+  return M;
+}
+
+}  // namespace seaflex

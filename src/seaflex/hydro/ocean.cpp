@@ -1,0 +1,27 @@
+#include "seaflex/hydro/ocean.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace seaflex::hydro {
+
+Ocean::Ocean(double rho, double g, double depth, WaveField waves, CurrentProfile current)
+    : rho_(rho), g_(g), depth_(depth), waves_(std::move(waves)), current_(std::move(current)) {}
+
+FluidPoint Ocean::fluid(const Vec3& p, double t) const {
+  FluidPoint out;
+  if (std::isfinite(depth_) && p.z() < -depth_) return out;
+  if (has_waves()) {
+    const FluidKinematics k = waves_.kinematics(p, t);
+    if (!k.wet) return out;
+    out.velocity = k.velocity;
+    out.acceleration = k.acceleration;
+  } else if (p.z() > 0.0) {
+    return out;
+  }
+  out.wet = true;
+  if (!current_.empty()) out.velocity += current_.velocity(std::min(p.z(), 0.0));
+  return out;
+}
+
+}  // namespace seaflex::hydro

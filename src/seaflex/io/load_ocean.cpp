@@ -1,0 +1,380 @@
+// environment.water / waves / current / wave_probes, and the hydrodynamics section: Morison
+// coefficients of beams; hull, Morison members, hydrodynamic matrices and BEM data of
+// rigid bodies. Format: docs/model-format.md sections 4 and 11.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "seaflex/forces/hull_hydrostatics.hpp"
+#include "seaflex/forces/hydro_matrices.hpp"
+#include "seaflex/forces/morison_beam.hpp"
+#include "seaflex/forces/rigid_morison.hpp"
+#include "seaflex/hydro/wave_spectrum.hpp"
+#include "seaflex/io/load_context.hpp"
+
+namespace seaflex::io {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double depth, double g,
+                                                             hydro::Ramp& ramp, bool& wheeler) {
+  const auto type = w.choice("type", Need::kRequired, {"airy", "jonswap", "pierson_moskowitz"});
+  const double direction = w.number("direction", Need::kOptional, NumberRule::range(-360, 360, "deg"))
+                               .value_or(0.0) *
+                           kDeg;
+  if (w.has("ramp")) {
+    MapReader rr(w.diagnostics(), w.get("ramp"), w.key_path("ramp"));
+    ramp.start = rr.number("start", Need::kOptional, NumberRule::nonnegative("s")).value_or(0.0);
+    ramp.duration = rr.number("duration", Need::kRequired, NumberRule::nonnegative("s")).value_or(0.0);
+    rr.finish();
+  }
+  if (w.has("wheeler_stretching")) {
+    const auto ws = w.choice("wheeler_stretching", Need::kRequired, {"true", "false"});
+    wheeler = ws.value_or("true") == "true";
+  }
+  if (!type) return std::nullopt;
+  std::vector<hydro::WaveComponent> components;
+  if (*type == "airy") {
+    const auto height = w.number("height", Need::kRequired, NumberRule::positive("m"));
+    const auto period = w.number("period", Need::kRequired, NumberRule::positive("s"));
+    const double phase =
+        w.number("phase", Need::kOptional, NumberRule::range(-360, 360, "deg")).value_or(0.0) * kDeg;
+    if (!height || !period) return std::nullopt;
+    components.push_back(hydro::regular_component(*height, *period, direction, phase, depth, g));
+    return components;
+  }
+  hydro::SpectrumSpec spec;
+  spec.kind = *type == "jonswap" ? hydro::SpectrumKind::kJonswap
+                                 : hydro::SpectrumKind::kPiersonMoskowitz;
+  const auto hs = w.number("hs", Need::kRequired, NumberRule::positive("m"));
+  const auto tp = w.number("tp", Need::kRequired, NumberRule::positive("s"));
+  if (*type == "jonswap")
+    spec.gamma = w.number("gamma", Need::kOptional, NumberRule::range(1.0, 20.0, "")).value_or(3.3);
+  spec.seed = static_cast<unsigned>(w.integer("seed", Need::kOptional, 0, 2147483647).value_or(1));
+  spec.components = w.integer("components", Need::kOptional, 1, 100000).value_or(200);
+  spec.omega_min = w.number("omega_min", Need::kOptional, NumberRule::positive("rad/s")).value_or(0.0);
+  spec.omega_max = w.number("omega_max", Need::kOptional, NumberRule::positive("rad/s")).value_or(0.0);
+  if (spec.omega_min > 0.0 && spec.omega_max > 0.0 && spec.omega_max <= spec.omega_min) {
+    w.error("omega_max", fmt::format("must exceed omega_min ({} rad/s), got {} rad/s",
+                                     spec.omega_min, spec.omega_max));
+    return std::nullopt;
+  }
+  if (!hs || !tp) return std::nullopt;
+  spec.hs = *hs;
+  spec.tp = *tp;
+  spec.direction = direction;
+  try {
+    return hydro::irregular_components(spec, depth, g);
+  } catch (const std::invalid_argument& e) {
+    w.error("type", e.what());
+    return std::nullopt;
+  }
+}
+
+std::optional<hydro::CurrentProfile> read_current(MapReader& c) {
+  const bool uniform = c.has("speed"), profiled = c.has("profile");
+  if (uniform == profiled) {
+    c.error(uniform ? "profile" : "speed",
+            "give either speed (m/s) and direction (deg) for a uniform current, or profile "
+            "[[z, speed, direction], ...]");
+    return std::nullopt;
+  }
+  if (uniform) {
+    const auto speed = c.number("speed", Need::kRequired, NumberRule::nonnegative("m/s"));
+    const double dir =
+        c.number("direction", Need::kOptional, NumberRule::range(-360, 360, "deg")).value_or(0.0);
+    if (!speed) return std::nullopt;
+    return hydro::CurrentProfile({{0.0, *speed, dir * kDeg}});
+  }
+  const auto rows = c.table("profile", Need::kRequired, 3, "z");
+  if (!rows) return std::nullopt;
+  std::vector<std::array<double, 3>> table;
+  for (const auto& row : *rows) {
+    if (row[0] > 0.0) {
+      c.error("profile", fmt::format("z must be <= 0 (the mean surface is z = 0), got {} m", row[0]));
+      return std::nullopt;
+    }
+    if (row[1] < 0.0) {
+      c.error("profile", fmt::format("a speed must be >= 0 m/s, got {} m/s", row[1]));
+      return std::nullopt;
+    }
+    table.push_back({row[0], row[1], row[2] * kDeg});
+  }
+  try {
+    return hydro::CurrentProfile(std::move(table));
+  } catch (const std::invalid_argument& e) {
+    c.error("profile", e.what());
+    return std::nullopt;
+  }
+}
+
+// a 6x6 matrix: a list of six rows of six numbers
+std::optional<Mat6> read_mat6(MapReader& r, std::string_view key, std::string_view unit) {
+  const YAML::Node n = r.get(key);
+  if (!n.IsDefined()) return Mat6::Zero();
+  const std::string path = r.key_path(key);
+  if (!n.IsSequence() || n.size() != 6) {
+    r.error(key, fmt::format("expected a 6x6 matrix (six rows of six numbers, {}; modes surge, "
+                             "sway, heave, roll, pitch, yaw)",
+                             unit));
+    return std::nullopt;
+  }
+  Mat6 M;
+  for (int i = 0; i < 6; ++i) {
+    if (!n[i].IsSequence() || n[i].size() != 6) {
+      r.diagnostics().error(n[i].Mark(), fmt::format("{}[{}]", path, i),
+                            "expected a row of six numbers");
+      return std::nullopt;
+    }
+    for (int j = 0; j < 6; ++j) {
+      const auto x = read_number(r.diagnostics(), n[i][j], fmt::format("{}[{}][{}]", path, i, j),
+                                 NumberRule::any(std::string(unit)));
+      if (!x) return std::nullopt;
+      M(i, j) = *x;
+    }
+  }
+  return M;
+}
+
+void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
+  MorisonBeamCoefficients c;
+  const double od = beam.section().outer_diameter;
+  c.diameter = r.number("diameter", od > 0.0 ? Need::kOptional : Need::kRequired,
+                        NumberRule::positive("m"))
+                   .value_or(od);
+  c.cd = r.number("cd", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+  c.cd_axial = r.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+  c.cm = r.number("cm", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+  c.ca = r.number("ca", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
+             .value_or(std::max(0.0, c.cm - 1.0));
+  if (r.has("buoyancy"))
+    c.buoyancy = r.choice("buoyancy", Need::kRequired, {"true", "false"}).value_or("true") == "true";
+  c.internal_density =
+      r.number("contents_density", Need::kOptional, NumberRule::nonnegative("kg/m^3")).value_or(0.0);
+  const double id = beam.section().inner_diameter;
+  c.internal_diameter = r.number("contents_diameter", Need::kOptional, NumberRule::positive("m"))
+                            .value_or(id);
+  if (c.internal_density > 0.0 && !(c.internal_diameter > 0.0))
+    r.error("contents_diameter", "required when contents_density is given and the beam has no "
+                                 "inner_diameter");
+  c.gauss_points = r.integer("gauss_points", Need::kOptional, 1, 20).value_or(5);
+  r.finish();
+  ctx.system.add_force(std::make_unique<MorisonBeam>(fmt::format("{}.morison", beam.name()), beam,
+                                                     c, ctx.model.ocean));
+}
+
+std::optional<Vec3> read_point(MapReader& r, std::string_view key, Need need) {
+  return r.vec3(key, need, "m");
+}
+
+void load_hull(const YAML::Node& node, const std::string& path, const RigidBody& body,
+               LoadContext& ctx) {
+  if (!node.IsSequence()) {
+    ctx.diag.error(node.Mark(), path, "expected a list of pieces (- box: {...} or - cylinder: {...})");
+    return;
+  }
+  std::vector<hydro::ConvexPolyhedron> pieces;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string p = fmt::format("{}[{}]", path, i);
+    MapReader item(ctx.diag, node[i], p);
+    if (!item.valid()) continue;
+    if (item.has("box")) {
+      MapReader b(ctx.diag, item.get("box"), p + ".box");
+      const auto center = read_point(b, "center", Need::kRequired);
+      const auto size = b.vec3("size", Need::kRequired, "m");
+      const auto axes = read_orientation(b, false);
+      b.finish();
+      if (size && (size->minCoeff() <= 0.0)) {
+        b.error("size", fmt::format("every edge must be > 0 m, got [{}, {}, {}]", size->x(),
+                                    size->y(), size->z()));
+        continue;
+      }
+      if (center && size && axes) pieces.push_back(hydro::ConvexPolyhedron::box(*center, *size, *axes));
+    } else if (item.has("cylinder")) {
+      MapReader c(ctx.diag, item.get("cylinder"), p + ".cylinder");
+      const auto a = read_point(c, "end_a", Need::kRequired);
+      const auto b = read_point(c, "end_b", Need::kRequired);
+      const auto d = c.number("diameter", Need::kRequired, NumberRule::positive("m"));
+      c.finish();
+      if (a && b && (*a - *b).norm() == 0.0) {
+        c.error("end_b", "coincides with end_a: a cylinder needs a length");
+        continue;
+      }
+      if (a && b && d) pieces.push_back(hydro::ConvexPolyhedron::cylinder(*a, *b, *d));
+    } else {
+      item.error("box", "each hull piece is a box or a cylinder");
+    }
+    item.finish();
+  }
+  ctx.system.add_force(std::make_unique<HullHydrostatics>(
+      fmt::format("{}.hydrostatics", body.name()), body, std::move(pieces), ctx.model.ocean->rho(),
+      ctx.model.ocean->g()));
+}
+
+void load_members(const YAML::Node& node, const std::string& path, const RigidBody& body,
+                  LoadContext& ctx) {
+  if (!node.IsSequence()) {
+    ctx.diag.error(node.Mark(), path, "expected a list of members");
+    return;
+  }
+  std::vector<MorisonMember> members;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    MapReader m(ctx.diag, node[i], fmt::format("{}[{}]", path, i));
+    if (!m.valid()) continue;
+    MorisonMember mem;
+    const auto a = read_point(m, "end_a", Need::kRequired);
+    const auto b = read_point(m, "end_b", Need::kRequired);
+    const auto d = m.number("diameter", Need::kRequired, NumberRule::positive("m"));
+    mem.cd = m.number("cd", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+    mem.cd_axial = m.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+    mem.cm = m.number("cm", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+    mem.ca = m.number("ca", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
+                 .value_or(std::max(0.0, mem.cm - 1.0));
+    mem.strips = m.integer("strips", Need::kOptional, 1, 64).value_or(10);
+    m.finish();
+    if (a && b && (*a - *b).norm() == 0.0) {
+      m.error("end_b", "coincides with end_a: a member needs a length");
+      continue;
+    }
+    if (!a || !b || !d) continue;
+    mem.a = *a;
+    mem.b = *b;
+    mem.diameter = *d;
+    members.push_back(mem);
+  }
+  ctx.system.add_force(std::make_unique<RigidMorison>(fmt::format("{}.morison", body.name()), body,
+                                                      std::move(members), ctx.model.ocean));
+}
+
+void load_rigid_hydro(MapReader& r, const RigidBody& body, LoadContext& ctx) {
+  const hydro::Ocean& ocean = *ctx.model.ocean;
+  if (const YAML::Node n = r.get("hull"); n.IsDefined()) load_hull(n, r.key_path("hull"), body, ctx);
+  if (const YAML::Node n = r.get("morison"); n.IsDefined())
+    load_members(n, r.key_path("morison"), body, ctx);
+
+  HydroMatrixSet set;
+  set.rho = ocean.rho();
+  set.g = ocean.g();
+  set.reference = read_point(r, "reference_point", Need::kOptional).value_or(Vec3::Zero());
+  const auto added = read_mat6(r, "added_mass", "kg, kg m, kg m^2");
+  const auto lin = read_mat6(r, "linear_damping", "N s/m, N s, N m s");
+  const auto quad = read_mat6(r, "quadratic_damping", "N s^2/m^2, ...");
+  if (added) set.added_mass = *added;
+  if (lin) set.linear_damping = *lin;
+  if (quad) set.quadratic_damping = *quad;
+  bool any = !set.added_mass.isZero(0.0) || !set.linear_damping.isZero(0.0) ||
+             !set.quadratic_damping.isZero(0.0);
+
+  if (r.has("bem")) {
+    MapReader b(ctx.diag, r.get("bem"), r.key_path("bem"));
+    load_bem(b, body, set, ctx);
+    b.finish();
+    any = true;
+  }
+  if (any || set.has_stiffness)
+    ctx.system.add_force(
+        std::make_unique<HydroMatrices>(fmt::format("{}.hydro_matrices", body.name()), body, set));
+}
+
+}  // namespace
+
+void load_water(MapReader& env, LoadContext& ctx, double g) {
+  const bool water = env.has("water");
+  const YAML::Node waves = env.get("waves");
+  const YAML::Node current = env.get("current");
+  const YAML::Node probes = env.get("wave_probes");
+  if (!water) {
+    for (const auto& [node, key] : {std::pair{waves, "waves"}, {current, "current"}, {probes, "wave_probes"}})
+      if (node.IsDefined()) env.error(key, "needs environment.water (density and depth)");
+    return;
+  }
+  MapReader w(ctx.diag, env.get("water"), env.key_path("water"));
+  const double rho = w.number("density", Need::kOptional, NumberRule::positive("kg/m^3")).value_or(1025.0);
+  double depth = std::numeric_limits<double>::infinity();
+  if (const YAML::Node d = w.get("depth", Need::kRequired, "the water depth in m, or infinite");
+      d.IsDefined()) {
+    if (!(d.IsScalar() && d.Scalar() == "infinite"))
+      depth = read_number(ctx.diag, d, w.key_path("depth"), NumberRule::positive("m")).value_or(depth);
+  }
+  w.finish();
+  if (!(g > 0.0)) {
+    env.error("water", "water needs gravity (hydrostatics and waves): gravity is zero");
+    return;
+  }
+  std::vector<hydro::WaveComponent> components;
+  hydro::Ramp ramp;
+  bool wheeler = true;
+  if (waves.IsDefined()) {
+    MapReader wr(ctx.diag, waves, env.key_path("waves"));
+    if (wr.valid())
+      if (auto c = read_waves(wr, depth, g, ramp, wheeler)) components = std::move(*c);
+    wr.finish();
+  }
+  hydro::CurrentProfile profile;
+  if (current.IsDefined()) {
+    MapReader cr(ctx.diag, current, env.key_path("current"));
+    if (cr.valid())
+      if (auto c = read_current(cr)) profile = std::move(*c);
+    cr.finish();
+  }
+  ctx.model.ocean = std::make_shared<const hydro::Ocean>(
+      rho, g, depth, hydro::WaveField(depth, g, rho, std::move(components), ramp, wheeler),
+      std::move(profile));
+  ctx.model.wave_probes.emplace_back("wave.eta", Vec3::Zero());
+  if (probes.IsDefined()) {
+    MapReader pr(ctx.diag, probes, env.key_path("wave_probes"));
+    if (pr.valid())
+      for (const auto& kv : probes) {
+        const std::string name = kv.first.as<std::string>();
+        pr.has(name);
+        const YAML::Node& xy = kv.second;
+        if (!xy.IsSequence() || xy.size() != 2) {
+          ctx.diag.error(xy.Mark(), pr.key_path(name), "expected [x, y] in m");
+          continue;
+        }
+        const auto x = read_number(ctx.diag, xy[0], pr.key_path(name), NumberRule::any("m"));
+        const auto y = read_number(ctx.diag, xy[1], pr.key_path(name), NumberRule::any("m"));
+        if (x && y) ctx.model.wave_probes.emplace_back(fmt::format("wave.eta.{}", name), Vec3(*x, *y, 0));
+      }
+  }
+}
+
+void load_hydrodynamics(const YAML::Node& node, LoadContext& ctx) {
+  MapReader top(ctx.diag, node, "hydrodynamics");
+  if (!top.valid()) return;
+  if (!ctx.model.ocean) {
+    ctx.diag.error(node.Mark(), "hydrodynamics",
+                   "needs environment.water (density and depth): there is no sea to act");
+    return;
+  }
+  for (const auto& kv : node) {
+    const std::string name = kv.first.as<std::string>();
+    top.has(name);
+    const std::string path = top.key_path(name);
+    const Body* body = ctx.system.find_body(name);
+    if (!body) {
+      std::vector<std::string> names;
+      for (const auto& b : ctx.system.bodies()) names.push_back(b->name());
+      if (std::find(ctx.failed_bodies.begin(), ctx.failed_bodies.end(), name) == ctx.failed_bodies.end())
+        ctx.diag.error(kv.first.Mark(), path,
+                       fmt::format("no body named '{}'; {}", name, suggestion(name, names)));
+      continue;
+    }
+    MapReader r(ctx.diag, kv.second, path);
+    if (!r.valid()) continue;
+    if (const auto* beam = dynamic_cast<const AncfBeam*>(body))
+      load_beam_hydro(r, *beam, ctx);
+    else if (const auto* rigid = dynamic_cast<const RigidBody*>(body)) {
+      load_rigid_hydro(r, *rigid, ctx);
+      r.finish();
+    } else {
+      r.error("", fmt::format("body '{}' is a {}: hydrodynamics apply to ancf_beam and "
+                              "rigid_body bodies", name, body->kind()));
+    }
+  }
+}
+
+}  // namespace seaflex::io
