@@ -93,7 +93,8 @@ TEST(HullHydrostatics, RestoringMomentOfHeeledBarge) {
   for (double deg : {1.0, 4.0, 8.0}) {
     const double phi = deg * kPi / 180;
     State s = sys.initial_state();
-    s.q.segment<4>(3) = math::euler_parameters_from_rotation(math::rotation_from_roll_pitch_yaw(phi, 0, 0));
+    s.q.segment<4>(3) =
+        math::euler_parameters_from_rotation(math::rotation_from_roll_pitch_yaw(phi, 0, 0));
     const Wrench W = hs.wrench_at(s);
     const double V = L * B * T, BM = B * B / (12 * T), GM = -T / 2 + BM;
     const double GZ = std::sin(phi) * (GM + 0.5 * BM * std::tan(phi) * std::tan(phi));
