@@ -1,0 +1,312 @@
+// Morison loads (thesis eq. 176-177) on ANCF beams and on rigid-body members, models built
+// from model files, against closed forms:
+//  - steady drag on a fixed horizontal pipe in a uniform current: 1/2 rho Cd D U^2 L;
+//  - the inline force history on a fixed vertical cylinder from the seabed through the
+//    surface in an Airy wave (drag + inertia integrated over depth; with Wheeler
+//    stretching the integral over [-d, eta] is (1 + eta/d) times the integral of the
+//    linear profile over [-d, 0]);
+//  - buoyancy of a partially submerged element;
+//  - dQ/dv and dQ/dq against central differences.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "seaflex/forces/morison_beam.hpp"
+#include "seaflex/forces/rigid_morison.hpp"
+#include "seaflex/hydro/dispersion.hpp"
+#include "seaflex/io/model_loader.hpp"
+
+using namespace seaflex;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Force& force_named(const io::Model& m, const std::string& name) {
+  for (const auto& f : m.system->forces())
+    if (f->name() == name) return *f;
+  throw std::runtime_error("no force " + name);
+}
+
+// Q of one force in a state
+VecX force_vector(const io::Model& m, const Force& f, const State& s) {
+  VecX Q = VecX::Zero(m.system->num_coordinates());
+  AssemblyTarget t;
+  t.forces = &Q;
+  f.assemble(s, 1.0, t);
+  return Q;
+}
+
+// resultant of a beam's generalized force: the position entries of every node (the
+// Hermite position functions s1 + s3 sum to one, so these add up to int f dx)
+Vec3 beam_resultant(const VecX& Q, Index offset, int nodes) {
+  Vec3 F = Vec3::Zero();
+  for (int k = 0; k < nodes; ++k) F += Q.segment<3>(offset + 6 * k);
+  return F;
+}
+
+TEST(Morison, SteadyDragOnHorizontalPipeInUniformCurrent) {
+  const std::string yaml = R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 200}
+  current: {speed: 1.7, direction: 90}
+bodies:
+  pipe:
+    type: ancf_beam
+    start: [0, 0, -20]
+    end: [30, 0, -20]
+    elements: 6
+    outer_diameter: 0.7
+    inner_diameter: 0.4
+    youngs_modulus: 210e9
+    density: 7850
+hydrodynamics:
+  pipe: {cd: 0.65, cm: 1.6, buoyancy: false}
+)";
+  const io::Model m = io::load_model_text(yaml, "pipe.yaml");
+  const State s = m.system->initial_state();
+  const Vec3 F = beam_resultant(force_vector(m, force_named(m, "pipe.morison"), s), 0, 7);
+  // the current flows towards +y, normal to the pipe; no acceleration, no motion:
+  // drag only, exactly 1/2 rho Cd D U^2 L (quadrature of a constant: round-off; 0.1 % asked)
+  const double expected = 0.5 * 1025 * 0.65 * 0.7 * 1.7 * 1.7 * 30;
+  EXPECT_NEAR(F.y(), expected, 1e-10 * expected);
+  EXPECT_NEAR(F.x(), 0.0, 1e-9 * expected);
+  EXPECT_NEAR(F.z(), 0.0, 1e-9 * expected);
+}
+
+TEST(Morison, BuoyancyOfAPartlySubmergedPipe) {
+  // a pipe from z = -12 to z = +3 in still water: buoyancy rho g A over the 12 wet metres
+  // only (the crossing found inside the element); exact to the root finder's 1e-12.
+  const std::string yaml = R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 50}
+bodies:
+  pipe:
+    type: ancf_beam
+    start: [0, 0, -12]
+    end: [0, 0, 3]
+    elements: 2
+    outer_diameter: 0.5
+    inner_diameter: 0.3
+    youngs_modulus: 210e9
+    density: 7850
+hydrodynamics:
+  pipe: {cd: 1.0, cm: 2.0}
+)";
+  const io::Model m = io::load_model_text(yaml, "buoy.yaml");
+  const State s = m.system->initial_state();
+  const Vec3 F = beam_resultant(force_vector(m, force_named(m, "pipe.morison"), s), 0, 3);
+  const double expected = 1025 * 9.81 * 0.25 * kPi * 0.25 * 12.0;
+  EXPECT_NEAR(F.z(), expected, 1e-9 * expected);
+}
+
+// closed form of the inline force on a vertical cylinder, seabed to surface, in an Airy
+// wave (amplitude a, deep enough profile given by k, d), Wheeler-stretched
+double cylinder_inline_force(double t, double a, double w, double k, double d, double D, double Cd,
+                             double Cm, double rho) {
+  const double th = w * t;  // at x = 0
+  const double eta = a * std::cos(th);
+  const double A = 0.25 * kPi * D * D;
+  const double sh = std::sinh(k * d);
+  // int_{-d}^0 cosh(k(z+d)) dz = sinh(kd)/k ; int cosh^2 = sinh(2kd)/(4k) + d/2
+  const double u0 = a * w / sh, a0 = a * w * w / sh;
+  const double inertia = -rho * Cm * A * a0 * std::sin(th) * sh / k;  // du/dt ~ -sin
+  const double c = std::cos(th);
+  const double drag =
+      0.5 * rho * Cd * D * u0 * u0 * std::abs(c) * c * (std::sinh(2 * k * d) / (4 * k) + d / 2);
+  return (1.0 + eta / d) * (inertia + drag);
+}
+
+TEST(Morison, InlineForceOnVerticalCylinderInAiryWave) {
+  const double d = 40, H = 4, T = 8, D = 2.0, Cd = 1.0, Cm = 2.0, rho = 1025, g = 9.81;
+  const std::string yaml = R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 40}
+  waves: {type: airy, height: 4, period: 8, direction: 0}
+bodies:
+  pile:
+    type: ancf_beam
+    start: [0, 0, -40]
+    end: [0, 0, 6]
+    elements: 23
+    outer_diameter: 2.0
+    inner_diameter: 1.8
+    youngs_modulus: 210e9
+    density: 7850
+hydrodynamics:
+  pile: {cd: 1.0, cm: 2.0, buoyancy: false, gauss_points: 8}
+)";
+  const io::Model m = io::load_model_text(yaml, "pile.yaml");
+  State s = m.system->initial_state();
+  const double w = 2 * kPi / T, k = hydro::wave_number(w, d, g), a = H / 2;
+  const Force& f = force_named(m, "pile.morison");
+  double fmax = 0.0, err = 0.0;
+  for (int i = 0; i < 32; ++i) {
+    s.t = i * T / 32;
+    const double F = beam_resultant(force_vector(m, f, s), 0, 24).x();
+    const double ref = cylinder_inline_force(s.t, a, w, k, d, D, Cd, Cm, rho);
+    fmax = std::max(fmax, std::abs(ref));
+    err = std::max(err, std::abs(F - ref));
+  }
+  // Gauss quadrature of cosh over 2 m elements is exact to ~1e-12; the element cut at the
+  // surface is found to 1e-12. The issue asks 0.5 %; 1e-6 of the peak is asserted.
+  EXPECT_LT(err, 1e-6 * fmax);
+  std::printf("pile inline force: peak %.6g N, max error %.3g N\n", fmax, err);
+}
+
+TEST(Morison, InlineForceOnRigidMemberInAiryWave) {
+  // the same pile as a Morison member of a rigid body held by a fixed joint to ground
+  const double d = 40, T = 8, D = 2.0, rho = 1025, g = 9.81;
+  const std::string yaml = R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 40}
+  waves: {type: airy, height: 4, period: 8, direction: 0}
+bodies:
+  jacket:
+    type: rigid_body
+    mass: 1.0e5
+    inertia: [1e7, 1e7, 1e6]
+    position: [0, 0, -17]
+joints:
+  - name: hold
+    type: fixed
+    from: {body: ground, position: [0, 0, -17]}
+    to: {body: jacket}
+hydrodynamics:
+  jacket:
+    morison:
+      - {end_a: [0, 0, -23], end_b: [0, 0, 23], diameter: 2.0, cd: 1.0, cm: 2.0, ca: 1.0, strips: 40}
+)";
+  const io::Model m = io::load_model_text(yaml, "jacket.yaml");
+  State s = m.system->initial_state();
+  const double w = 2 * kPi / T, k = hydro::wave_number(w, d, g), a = 2.0;
+  const auto& f = static_cast<const RigidMorison&>(force_named(m, "jacket.morison"));
+  double fmax = 0.0, err = 0.0;
+  for (int i = 0; i < 32; ++i) {
+    s.t = i * T / 32;
+    const double F = f.wrench_at(s).force.x();
+    const double ref = cylinder_inline_force(s.t, a, w, k, d, D, 1.0, 2.0, rho);
+    fmax = std::max(fmax, std::abs(ref));
+    err = std::max(err, std::abs(F - ref));
+  }
+  // 40 Gauss points over the 40 m wet length integrate cosh(k z) (k d = 2.6) to ~1e-12;
+  // the |cos| cos drag is smooth in z. 0.5 % asked; 1e-6 asserted.
+  EXPECT_LT(err, 1e-6 * fmax);
+}
+
+TEST(Morison, BeamTangentsMatchFiniteDifferences) {
+  const std::string yaml = R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 60}
+  waves: {type: airy, height: 3, period: 9, direction: 30}
+  current: {profile: [[-60, 0.1, 40], [-30, 0.6, 40], [0, 1.2, 10]]}
+bodies:
+  riser:
+    type: ancf_beam
+    polyline: [[0, 0, -50], [6, 3, -20], [8, 5, -2]]
+    elements: [3, 2]
+    outer_diameter: 0.6
+    inner_diameter: 0.4
+    youngs_modulus: 210e9
+    density: 7850
+hydrodynamics:
+  riser: {cd: 1.1, cd_axial: 0.02, cm: 1.9, ca: 0.9}
+)";
+  const io::Model m = io::load_model_text(yaml, "riser.yaml");
+  State s = m.system->initial_state();
+  s.t = 2.3;
+  for (Index i = 0; i < s.v.size(); ++i) s.v[i] = 0.3 * std::sin(1.7 * i);
+  Force& f = force_named(m, "riser.morison");
+  const Index n = s.q.size();
+  // the tangent blocks: -dQ/dq (kq = 1) and -dQ/dv (kv = 1)
+  auto tangent = [&](double kq, double kv) {
+    math::SparseBlockAssembler A(n, n);
+    f.declare_blocks(A);
+    A.finalize();
+    A.set_zero();
+    AssemblyTarget t;
+    t.matrix = &A;
+    t.scales = MatrixScales{0.0, kq, kv};
+    f.assemble(s, 1.0, t);
+    return MatX(A.matrix());
+  };
+  // central differences of Q in v and q
+  MatX dQdv(n, n), dQdq(n, n);
+  for (Index j = 0; j < n; ++j) {
+    State sp = s, sm = s;
+    sp.v[j] += 1e-6;
+    sm.v[j] -= 1e-6;
+    dQdv.col(j) = (force_vector(m, f, sp) - force_vector(m, f, sm)) / 2e-6;
+    sp = s;
+    sm = s;
+    sp.q[j] += 1e-6;
+    sm.q[j] -= 1e-6;
+    dQdq.col(j) = (force_vector(m, f, sp) - force_vector(m, f, sm)) / 2e-6;
+  }
+  const MatX Kv = -tangent(0.0, 1.0), Kq = -tangent(1.0, 0.0);
+  // dQ/dv is exact: differences agree to the FD truncation, 1e-6 of the largest entry.
+  EXPECT_LT((Kv - dQdv).lpNorm<Eigen::Infinity>(), 1e-6 * dQdv.lpNorm<Eigen::Infinity>());
+  // dQ/dq leaves out the motion of the wet end (the top element crosses the surface),
+  // whose entries are small: 1 % of the largest entry is asserted, and below the surface
+  // element (the first four elements, coordinates 0..29) 1e-5.
+  EXPECT_LT((Kq - dQdq).lpNorm<Eigen::Infinity>(), 1e-2 * dQdq.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((Kq - dQdq).topLeftCorner(24, 24).lpNorm<Eigen::Infinity>(),
+            1e-5 * dQdq.lpNorm<Eigen::Infinity>());
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Morison, AddedMassActsNormalToTheBeamOnly) {
+  // a horizontal pipe along x: the added mass matrix int S^T rho Ca A (I - t t^T) S dx
+  // gives a rigid translation along y or z the mass rho Ca A L, along x none.
+  // Exact (Gauss quadrature of the Hermite products): 1e-12 relative.
+  const std::string yaml = R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 200}
+bodies:
+  pipe:
+    type: ancf_beam
+    start: [0, 0, -20]
+    end: [24, 0, -20]
+    elements: 4
+    outer_diameter: 0.7
+    inner_diameter: 0.4
+    youngs_modulus: 210e9
+    density: 7850
+hydrodynamics:
+  pipe: {cd: 0.65, cm: 1.6}
+)";
+  const io::Model m = io::load_model_text(yaml, "pipe.yaml");
+  Force& f = force_named(m, "pipe.morison");
+  EXPECT_FALSE(f.constant_mass());
+  const State s = m.system->initial_state();
+  const Index n = s.q.size();
+  math::SparseBlockAssembler A(n, n);
+  f.declare_blocks(A);
+  A.finalize();
+  A.set_zero();
+  AssemblyTarget t;
+  t.matrix = &A;
+  t.scales = MatrixScales{1.0, 0.0, 0.0};
+  f.assemble(s, 1.0, t);
+  const MatX M = A.matrix();
+  const double expected = 1025 * 0.6 * 0.25 * kPi * 0.49 * 24;  // Ca = Cm - 1 = 0.6
+  for (int dir = 0; dir < 3; ++dir) {
+    VecX u = VecX::Zero(n);
+    for (int k = 0; k < 5; ++k) u[6 * k + dir] = 1.0;  // unit translation: r = 1, r' = 0
+    const double mass = u.dot(M * u);
+    EXPECT_NEAR(mass, dir == 0 ? 0.0 : expected, 1e-12 * expected) << dir;
+  }
+}
+
+}  // namespace
