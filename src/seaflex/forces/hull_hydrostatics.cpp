@@ -36,9 +36,8 @@ Wrench HullHydrostatics::wrench(const RigidBodyMotion& m) const {
 void HullHydrostatics::add_channels(ChannelList& channels) const {
   channels.push_back({fmt::format("{}.volume", name()),
                       [this](const State& s) { return displacement(s).volume; }});
-  channels.push_back({fmt::format("{}.buoyancy", name()), [this](const State& s) {
-                        return rho_ * g_ * displacement(s).volume;
-                      }});
+  channels.push_back({fmt::format("{}.buoyancy", name()),
+                      [this](const State& s) { return rho_ * g_ * displacement(s).volume; }});
 }
 
 }  // namespace seaflex

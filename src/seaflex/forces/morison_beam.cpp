@@ -20,8 +20,11 @@ void add_kron(Mat12& K, const Vec4& a, const Vec4& b, const Mat3& B, double scal
 MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
                          MorisonBeamCoefficients coefficients,
                          std::shared_ptr<const hydro::Ocean> ocean)
-    : Force(std::move(name)), beam_(beam), coefficients_(coefficients),
-      ocean_(std::move(ocean)), rule_(math::gauss_legendre_unit(coefficients.gauss_points)) {}
+    : Force(std::move(name)),
+      beam_(beam),
+      coefficients_(coefficients),
+      ocean_(std::move(ocean)),
+      rule_(math::gauss_legendre_unit(coefficients.gauss_points)) {}
 
 void MorisonBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
   blocks_.clear();
@@ -63,8 +66,8 @@ std::pair<double, double> MorisonBeam::wet_interval(const State& state, int k) c
 }
 
 MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, const Vec3& rdot,
-                                               double t, double load_factor,
-                                               bool derivatives, bool with_buoyancy) const {
+                                               double t, double load_factor, bool derivatives,
+                                               bool with_buoyancy) const {
   const MorisonBeamCoefficients& c = coefficients_;
   const double rho = ocean_->rho();
   const double D = c.diameter;
@@ -78,7 +81,7 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, co
   const double ua = tt.dot(u);
   const Vec3 un = u - ua * tt;
   const double unn = un.norm();
-  const double cd = 0.5 * rho * c.cd * D;                              // thesis eq. (176)
+  const double cd = 0.5 * rho * c.cd * D;  // thesis eq. (176)
   const double cax = 0.5 * rho * c.cd_axial * std::numbers::pi * D;
   const double ci = rho * c.cm * area;
   const Vec3 an = fl.acceleration - tt.dot(fl.acceleration) * tt;
@@ -92,15 +95,15 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, co
   out.df_dv = -(Dn * P + Da);
   const Mat3 dt_drp = P / stretch;
   const Mat3 dun_dt = -(tt * u.transpose() + ua * Mat3::Identity());
-  const Mat3 dfa_dt = cax * (2.0 * std::abs(ua) * tt * u.transpose() + std::abs(ua) * ua * Mat3::Identity());
-  const Mat3 dfi_dt = -ci * (tt * fl.acceleration.transpose() +
-                             tt.dot(fl.acceleration) * Mat3::Identity());
+  const Mat3 dfa_dt =
+      cax * (2.0 * std::abs(ua) * tt * u.transpose() + std::abs(ua) * ua * Mat3::Identity());
+  const Mat3 dfi_dt =
+      -ci * (tt * fl.acceleration.transpose() + tt.dot(fl.acceleration) * Mat3::Identity());
   out.df_drp = (Dn * dun_dt + dfa_dt + dfi_dt) * dt_drp;
   return out;
 }
 
-void MorisonBeam::assemble(const State& state, double load_factor,
-                           AssemblyTarget& target) const {
+void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarget& target) const {
   const MorisonBeamCoefficients& c = coefficients_;
   const MatrixScales& s = target.scales;
   const bool want_matrix = target.matrix != nullptr && s.any();

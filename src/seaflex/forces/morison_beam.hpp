@@ -31,15 +31,15 @@
 namespace seaflex {
 
 struct MorisonBeamCoefficients {
-  double diameter = 0.0;          ///< hydrodynamic diameter D (m)
-  double cd = 0.0;                ///< normal drag coefficient
-  double cd_axial = 0.0;          ///< axial drag coefficient (on the perimeter pi D)
-  double ca = 0.0;                ///< normal added mass coefficient
-  double cm = 0.0;                ///< inertia coefficient on the fluid acceleration
-  bool buoyancy = true;           ///< buoyancy of the submerged part
-  double internal_density = 0.0;  ///< rho_i of the contents (kg/m^3), 0 = empty
-  double internal_diameter = 0.0; ///< D_i of the contents (m)
-  int gauss_points = 5;           ///< per element (wet part)
+  double diameter = 0.0;           ///< hydrodynamic diameter D (m)
+  double cd = 0.0;                 ///< normal drag coefficient
+  double cd_axial = 0.0;           ///< axial drag coefficient (on the perimeter pi D)
+  double ca = 0.0;                 ///< normal added mass coefficient
+  double cm = 0.0;                 ///< inertia coefficient on the fluid acceleration
+  bool buoyancy = true;            ///< buoyancy of the submerged part
+  double internal_density = 0.0;   ///< rho_i of the contents (kg/m^3), 0 = empty
+  double internal_diameter = 0.0;  ///< D_i of the contents (m)
+  int gauss_points = 5;            ///< per element (wet part)
 };
 
 class MorisonBeam : public Force {

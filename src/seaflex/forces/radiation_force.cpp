@@ -6,12 +6,14 @@ namespace seaflex {
 
 RadiationForce::RadiationForce(std::string name, const RigidBody& body, const Vec3& reference,
                                hydro::ConvolutionRadiation convolution)
-    : RigidBodyLoad(std::move(name), body), reference_(reference),
+    : RigidBodyLoad(std::move(name), body),
+      reference_(reference),
       convolution_(std::move(convolution)) {}
 
 RadiationForce::RadiationForce(std::string name, const RigidBody& body, const Vec3& reference,
                                hydro::StateSpaceRadiation state_space)
-    : RigidBodyLoad(std::move(name), body), reference_(reference),
+    : RigidBodyLoad(std::move(name), body),
+      reference_(reference),
       state_space_(std::move(state_space)) {}
 
 void RadiationForce::start(const State& state) {

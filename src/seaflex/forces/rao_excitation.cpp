@@ -13,8 +13,11 @@ RaoExcitation::RaoExcitation(std::string name, const RigidBody& body,
                              std::shared_ptr<const hydro::HydroDatabase> database,
                              std::shared_ptr<const hydro::Ocean> ocean, const Vec3& reference,
                              const Vec3& rest_position)
-    : RigidBodyLoad(std::move(name), body), db_(std::move(database)), ocean_(std::move(ocean)),
-      reference_(reference), rest_(rest_position) {}
+    : RigidBodyLoad(std::move(name), body),
+      db_(std::move(database)),
+      ocean_(std::move(ocean)),
+      reference_(reference),
+      rest_(rest_position) {}
 
 Vec6 RaoExcitation::excitation(double t, double heading) const {
   Vec6 f = Vec6::Zero();
@@ -22,9 +25,9 @@ Vec6 RaoExcitation::excitation(double t, double heading) const {
   if (ramp == 0.0) return f;
   for (const hydro::WaveComponent& c : ocean_->waves().components()) {
     const hydro::Vec6c X = db_->excitation_at(c.omega, c.direction - heading);
-    const double arg = c.omega * t -
-                       c.k * (rest_.x() * std::cos(c.direction) + rest_.y() * std::sin(c.direction)) +
-                       c.phase;
+    const double arg =
+        c.omega * t -
+        c.k * (rest_.x() * std::cos(c.direction) + rest_.y() * std::sin(c.direction)) + c.phase;
     const std::complex<double> e = c.amplitude * std::polar(1.0, arg);
     for (int i = 0; i < 6; ++i) f[i] += (X[i] * e).real();  // WAMIT: F = Re{X A e^{iwt}}
   }

@@ -53,12 +53,10 @@ RigidBodyMotion RigidBodyLoad::motion_of(const Vec7& q, const Vec7& v, double t)
 }
 
 RigidBodyMotion RigidBodyLoad::motion(const State& state) const {
-  return motion_of(state.q.segment<7>(body_.offset()), state.v.segment<7>(body_.offset()),
-                   state.t);
+  return motion_of(state.q.segment<7>(body_.offset()), state.v.segment<7>(body_.offset()), state.t);
 }
 
-void RigidBodyLoad::assemble(const State& state, double load_factor,
-                             AssemblyTarget& target) const {
+void RigidBodyLoad::assemble(const State& state, double load_factor, AssemblyTarget& target) const {
   const Index o = body_.offset();
   const Vec7 q = state.q.segment<7>(o);
   const Vec7 v = state.v.segment<7>(o);
@@ -88,8 +86,8 @@ void RigidBodyLoad::assemble(const State& state, double load_factor,
       Vec7 qp = q, qm = q;
       qp[i] += h;
       qm[i] -= h;
-      A.col(i) -= s.kq * load_factor * (generalized_force(qp, v) - generalized_force(qm, v)) /
-                  (2.0 * h);
+      A.col(i) -=
+          s.kq * load_factor * (generalized_force(qp, v) - generalized_force(qm, v)) / (2.0 * h);
     }
   }
   if (s.kv != 0.0 && velocity_dependent()) {
@@ -99,8 +97,8 @@ void RigidBodyLoad::assemble(const State& state, double load_factor,
       Vec7 vp = v, vm = v;
       vp[i] += h;
       vm[i] -= h;
-      A.col(i) -= s.kv * load_factor * (generalized_force(q, vp) - generalized_force(q, vm)) /
-                  (2.0 * h);
+      A.col(i) -=
+          s.kv * load_factor * (generalized_force(q, vp) - generalized_force(q, vm)) / (2.0 * h);
     }
   }
   target.matrix->add(block_, A);

@@ -22,10 +22,10 @@ using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 /// The body's motion as the wrench functions see it (world axes).
 struct RigidBodyMotion {
-  Vec3 r;   ///< centre of gravity (m)
-  Mat3 R;   ///< body axes in the world, R = A(p) of the (not renormalized) p
-  Vec3 v;   ///< velocity of the centre of gravity (m/s)
-  Vec3 w;   ///< angular velocity (rad/s)
+  Vec3 r;  ///< centre of gravity (m)
+  Mat3 R;  ///< body axes in the world, R = A(p) of the (not renormalized) p
+  Vec3 v;  ///< velocity of the centre of gravity (m/s)
+  Vec3 w;  ///< angular velocity (rad/s)
   double t;
   /// World position and velocity of a body-fixed point u (body axes, from the CG).
   Vec3 point(const Vec3& u) const { return r + R * u; }

@@ -11,8 +11,7 @@ namespace seaflex {
 RigidMorison::RigidMorison(std::string name, const RigidBody& body,
                            std::vector<MorisonMember> members,
                            std::shared_ptr<const hydro::Ocean> ocean)
-    : RigidBodyLoad(std::move(name), body), members_(std::move(members)),
-      ocean_(std::move(ocean)) {
+    : RigidBodyLoad(std::move(name), body), members_(std::move(members)), ocean_(std::move(ocean)) {
   for (const auto& mem : members_) {
     if (mem.ca != 0.0) has_added_mass_ = true;
     rules_.push_back(math::gauss_legendre_unit(mem.strips));

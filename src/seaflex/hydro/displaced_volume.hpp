@@ -31,9 +31,9 @@ struct ConvexPolyhedron {
 };
 
 struct Displacement {
-  double volume = 0.0;             ///< m^3
-  Vec3 centroid = Vec3::Zero();    ///< centre of buoyancy (world, m); zero when dry
-  double waterplane_area = 0.0;    ///< m^2 (the cut's area, projected on z = 0)
+  double volume = 0.0;           ///< m^3
+  Vec3 centroid = Vec3::Zero();  ///< centre of buoyancy (world, m); zero when dry
+  double waterplane_area = 0.0;  ///< m^2 (the cut's area, projected on z = 0)
 };
 
 /// The part of the hull below z = 0, the hull's vertices mapped to the world by

@@ -1,6 +1,7 @@
-// hydrodynamics.<body>.bem: a WAMIT-format BEM database (.1, .3, .hst) for a rigid body:
-// infinite-frequency added mass, hydrostatic matrix, RAO wave excitation and Cummins
-// radiation memory (thesis eq. 173). Format: docs/model-format.md section 11.
+// hydrodynamics.<body>.bem: a WAMIT-format BEM database (.1, .3, .hst) for a
+// rigid body: infinite-frequency added mass, hydrostatic matrix, RAO wave
+// excitation and Cummins radiation memory (thesis eq. 173). Format:
+// docs/model-format.md section 11.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -16,20 +17,25 @@ namespace seaflex::io {
 void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadContext& ctx) {
   const hydro::Ocean& ocean = *ctx.model.ocean;
   const auto file = b.text("wamit", Need::kRequired);
-  const double ulen = b.number("length_scale", Need::kOptional, NumberRule::positive("m")).value_or(1.0);
-  const double g_bem = b.number("gravity", Need::kOptional, NumberRule::positive("m/s^2")).value_or(ocean.g());
-  const auto radiation = b.choice("radiation", Need::kOptional, {"convolution", "state_space", "none"})
-                             .value_or("convolution");
-  const double memory = b.number("memory", Need::kOptional, NumberRule::positive("s")).value_or(60.0);
-  const double kdt = b.number("kernel_time_step", Need::kOptional, NumberRule::positive("s")).value_or(0.05);
-  const bool excitation = b.choice("excitation", Need::kOptional, {"true", "false"}).value_or("true") == "true";
+  const double ulen =
+      b.number("length_scale", Need::kOptional, NumberRule::positive("m")).value_or(1.0);
+  const double g_bem =
+      b.number("gravity", Need::kOptional, NumberRule::positive("m/s^2")).value_or(ocean.g());
+  const auto radiation =
+      b.choice("radiation", Need::kOptional, {"convolution", "state_space", "none"})
+          .value_or("convolution");
+  const double memory =
+      b.number("memory", Need::kOptional, NumberRule::positive("s")).value_or(60.0);
+  const double kdt =
+      b.number("kernel_time_step", Need::kOptional, NumberRule::positive("s")).value_or(0.05);
+  const bool excitation =
+      b.choice("excitation", Need::kOptional, {"true", "false"}).value_or("true") == "true";
   const bool hydrostatics = b.has("displaced_volume");
   const auto volume = b.number("displaced_volume", Need::kOptional, NumberRule::positive("m^3"));
   const auto still = b.vec3("still_water_position", Need::kOptional, "m");
   if (!file) return;
   std::filesystem::path stem(*file);
-  if (stem.is_relative())
-    stem = std::filesystem::path(ctx.diag.file()).parent_path() / stem;
+  if (stem.is_relative()) stem = std::filesystem::path(ctx.diag.file()).parent_path() / stem;
   std::shared_ptr<hydro::HydroDatabase> db;
   try {
     db = std::make_shared<hydro::HydroDatabase>(
@@ -41,13 +47,15 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
   }
   if (!db->has_added_mass_inf)
     b.error("wamit", fmt::format("{}.1 has no infinite-frequency rows (PER = 0): the Cummins "
-                                 "equation needs A(inf)", stem.string()));
+                                 "equation needs A(inf)",
+                                 stem.string()));
   else
     set.added_mass += db->added_mass_inf;
-    if (hydrostatics) {
+  if (hydrostatics) {
     if (!db->has_hydrostatics) {
       b.error("displaced_volume", fmt::format("needs {}.hst (the hydrostatic matrix), which "
-                                              "was not found", stem.string()));
+                                              "was not found",
+                                              stem.string()));
     } else {
       set.has_stiffness = true;
       set.stiffness = db->hydrostatic_stiffness;
@@ -59,24 +67,27 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
   if (excitation && ocean.has_waves()) {
     if (!db->has_excitation) {
       b.error("wamit", fmt::format("{}.3 (excitation RAOs) was not found; give excitation: "
-                                   "false to run without wave excitation", stem.string()));
+                                   "false to run without wave excitation",
+                                   stem.string()));
     } else {
       for (const auto& c : ocean.waves().components()) {
         if (c.omega < db->omega.front() || c.omega > db->omega.back()) {
-          ctx.model.warnings.push_back(fmt::format(
-              "{}: a wave frequency {:.4g} rad/s lies outside the BEM range [{:.4g}, {:.4g}] "
-              "rad/s of {}; the RAO of the nearest tabulated frequency is used",
-              b.path(), c.omega, db->omega.front(), db->omega.back(), stem.string()));
+          ctx.model.warnings.push_back(
+              fmt::format("{}: a wave frequency {:.4g} rad/s lies outside the BEM range "
+                          "[{:.4g}, {:.4g}] "
+                          "rad/s of {}; the RAO of the nearest tabulated frequency is used",
+                          b.path(), c.omega, db->omega.front(), db->omega.back(), stem.string()));
           break;
         }
       }
-      ctx.system.add_force(std::make_unique<RaoExcitation>(
-          fmt::format("{}.excitation", body.name()), body, db, ctx.model.ocean, set.reference,
-          rest));
+      ctx.system.add_force(
+          std::make_unique<RaoExcitation>(fmt::format("{}.excitation", body.name()), body, db,
+                                          ctx.model.ocean, set.reference, rest));
     }
   }
   if (radiation != "none") {
-    const hydro::RetardationKernel kernel = hydro::RetardationKernel::from_damping(*db, kdt, memory);
+    const hydro::RetardationKernel kernel =
+        hydro::RetardationKernel::from_damping(*db, kdt, memory);
     const std::string name = fmt::format("{}.radiation", body.name());
     if (radiation == "convolution")
       ctx.system.add_force(std::make_unique<RadiationForce>(

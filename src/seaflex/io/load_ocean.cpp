@@ -20,15 +20,16 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double depth, double g,
-                                                             hydro::Ramp& ramp, bool& wheeler) {
+                                                            hydro::Ramp& ramp, bool& wheeler) {
   const auto type = w.choice("type", Need::kRequired, {"airy", "jonswap", "pierson_moskowitz"});
-  const double direction = w.number("direction", Need::kOptional, NumberRule::range(-360, 360, "deg"))
-                               .value_or(0.0) *
-                           kDeg;
+  const double direction =
+      w.number("direction", Need::kOptional, NumberRule::range(-360, 360, "deg")).value_or(0.0) *
+      kDeg;
   if (w.has("ramp")) {
     MapReader rr(w.diagnostics(), w.get("ramp"), w.key_path("ramp"));
     ramp.start = rr.number("start", Need::kOptional, NumberRule::nonnegative("s")).value_or(0.0);
-    ramp.duration = rr.number("duration", Need::kRequired, NumberRule::nonnegative("s")).value_or(0.0);
+    ramp.duration =
+        rr.number("duration", Need::kRequired, NumberRule::nonnegative("s")).value_or(0.0);
     rr.finish();
   }
   if (w.has("wheeler_stretching")) {
@@ -41,22 +42,25 @@ std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double
     const auto height = w.number("height", Need::kRequired, NumberRule::positive("m"));
     const auto period = w.number("period", Need::kRequired, NumberRule::positive("s"));
     const double phase =
-        w.number("phase", Need::kOptional, NumberRule::range(-360, 360, "deg")).value_or(0.0) * kDeg;
+        w.number("phase", Need::kOptional, NumberRule::range(-360, 360, "deg")).value_or(0.0) *
+        kDeg;
     if (!height || !period) return std::nullopt;
     components.push_back(hydro::regular_component(*height, *period, direction, phase, depth, g));
     return components;
   }
   hydro::SpectrumSpec spec;
-  spec.kind = *type == "jonswap" ? hydro::SpectrumKind::kJonswap
-                                 : hydro::SpectrumKind::kPiersonMoskowitz;
+  spec.kind =
+      *type == "jonswap" ? hydro::SpectrumKind::kJonswap : hydro::SpectrumKind::kPiersonMoskowitz;
   const auto hs = w.number("hs", Need::kRequired, NumberRule::positive("m"));
   const auto tp = w.number("tp", Need::kRequired, NumberRule::positive("s"));
   if (*type == "jonswap")
     spec.gamma = w.number("gamma", Need::kOptional, NumberRule::range(1.0, 20.0, "")).value_or(3.3);
   spec.seed = static_cast<unsigned>(w.integer("seed", Need::kOptional, 0, 2147483647).value_or(1));
   spec.components = w.integer("components", Need::kOptional, 1, 100000).value_or(200);
-  spec.omega_min = w.number("omega_min", Need::kOptional, NumberRule::positive("rad/s")).value_or(0.0);
-  spec.omega_max = w.number("omega_max", Need::kOptional, NumberRule::positive("rad/s")).value_or(0.0);
+  spec.omega_min =
+      w.number("omega_min", Need::kOptional, NumberRule::positive("rad/s")).value_or(0.0);
+  spec.omega_max =
+      w.number("omega_max", Need::kOptional, NumberRule::positive("rad/s")).value_or(0.0);
   if (spec.omega_min > 0.0 && spec.omega_max > 0.0 && spec.omega_max <= spec.omega_min) {
     w.error("omega_max", fmt::format("must exceed omega_min ({} rad/s), got {} rad/s",
                                      spec.omega_min, spec.omega_max));
@@ -94,7 +98,8 @@ std::optional<hydro::CurrentProfile> read_current(MapReader& c) {
   std::vector<std::array<double, 3>> table;
   for (const auto& row : *rows) {
     if (row[0] > 0.0) {
-      c.error("profile", fmt::format("z must be <= 0 (the mean surface is z = 0), got {} m", row[0]));
+      c.error("profile",
+              fmt::format("z must be <= 0 (the mean surface is z = 0), got {} m", row[0]));
       return std::nullopt;
     }
     if (row[1] < 0.0) {
@@ -142,24 +147,28 @@ std::optional<Mat6> read_mat6(MapReader& r, std::string_view key, std::string_vi
 void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
   MorisonBeamCoefficients c;
   const double od = beam.section().outer_diameter;
-  c.diameter = r.number("diameter", od > 0.0 ? Need::kOptional : Need::kRequired,
-                        NumberRule::positive("m"))
-                   .value_or(od);
+  c.diameter =
+      r.number("diameter", od > 0.0 ? Need::kOptional : Need::kRequired, NumberRule::positive("m"))
+          .value_or(od);
   c.cd = r.number("cd", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-  c.cd_axial = r.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+  c.cd_axial =
+      r.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
   c.cm = r.number("cm", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
   c.ca = r.number("ca", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
              .value_or(std::max(0.0, c.cm - 1.0));
   if (r.has("buoyancy"))
-    c.buoyancy = r.choice("buoyancy", Need::kRequired, {"true", "false"}).value_or("true") == "true";
+    c.buoyancy =
+        r.choice("buoyancy", Need::kRequired, {"true", "false"}).value_or("true") == "true";
   c.internal_density =
-      r.number("contents_density", Need::kOptional, NumberRule::nonnegative("kg/m^3")).value_or(0.0);
+      r.number("contents_density", Need::kOptional, NumberRule::nonnegative("kg/m^3"))
+          .value_or(0.0);
   const double id = beam.section().inner_diameter;
-  c.internal_diameter = r.number("contents_diameter", Need::kOptional, NumberRule::positive("m"))
-                            .value_or(id);
+  c.internal_diameter =
+      r.number("contents_diameter", Need::kOptional, NumberRule::positive("m")).value_or(id);
   if (c.internal_density > 0.0 && !(c.internal_diameter > 0.0))
-    r.error("contents_diameter", "required when contents_density is given and the beam has no "
-                                 "inner_diameter");
+    r.error("contents_diameter",
+            "required when contents_density is given and the beam has no "
+            "inner_diameter");
   c.gauss_points = r.integer("gauss_points", Need::kOptional, 1, 20).value_or(5);
   r.finish();
   ctx.system.add_force(std::make_unique<MorisonBeam>(fmt::format("{}.morison", beam.name()), beam,
@@ -173,7 +182,8 @@ std::optional<Vec3> read_point(MapReader& r, std::string_view key, Need need) {
 void load_hull(const YAML::Node& node, const std::string& path, const RigidBody& body,
                LoadContext& ctx) {
   if (!node.IsSequence()) {
-    ctx.diag.error(node.Mark(), path, "expected a list of pieces (- box: {...} or - cylinder: {...})");
+    ctx.diag.error(node.Mark(), path,
+                   "expected a list of pieces (- box: {...} or - cylinder: {...})");
     return;
   }
   std::vector<hydro::ConvexPolyhedron> pieces;
@@ -192,7 +202,8 @@ void load_hull(const YAML::Node& node, const std::string& path, const RigidBody&
                                     size->y(), size->z()));
         continue;
       }
-      if (center && size && axes) pieces.push_back(hydro::ConvexPolyhedron::box(*center, *size, *axes));
+      if (center && size && axes)
+        pieces.push_back(hydro::ConvexPolyhedron::box(*center, *size, *axes));
     } else if (item.has("cylinder")) {
       MapReader c(ctx.diag, item.get("cylinder"), p + ".cylinder");
       const auto a = read_point(c, "end_a", Need::kRequired);
@@ -229,7 +240,8 @@ void load_members(const YAML::Node& node, const std::string& path, const RigidBo
     const auto b = read_point(m, "end_b", Need::kRequired);
     const auto d = m.number("diameter", Need::kRequired, NumberRule::positive("m"));
     mem.cd = m.number("cd", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-    mem.cd_axial = m.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
+    mem.cd_axial =
+        m.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
     mem.cm = m.number("cm", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
     mem.ca = m.number("ca", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
                  .value_or(std::max(0.0, mem.cm - 1.0));
@@ -251,7 +263,8 @@ void load_members(const YAML::Node& node, const std::string& path, const RigidBo
 
 void load_rigid_hydro(MapReader& r, const RigidBody& body, LoadContext& ctx) {
   const hydro::Ocean& ocean = *ctx.model.ocean;
-  if (const YAML::Node n = r.get("hull"); n.IsDefined()) load_hull(n, r.key_path("hull"), body, ctx);
+  if (const YAML::Node n = r.get("hull"); n.IsDefined())
+    load_hull(n, r.key_path("hull"), body, ctx);
   if (const YAML::Node n = r.get("morison"); n.IsDefined())
     load_members(n, r.key_path("morison"), body, ctx);
 
@@ -287,17 +300,20 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
   const YAML::Node current = env.get("current");
   const YAML::Node probes = env.get("wave_probes");
   if (!water) {
-    for (const auto& [node, key] : {std::pair{waves, "waves"}, {current, "current"}, {probes, "wave_probes"}})
+    for (const auto& [node, key] :
+         {std::pair{waves, "waves"}, {current, "current"}, {probes, "wave_probes"}})
       if (node.IsDefined()) env.error(key, "needs environment.water (density and depth)");
     return;
   }
   MapReader w(ctx.diag, env.get("water"), env.key_path("water"));
-  const double rho = w.number("density", Need::kOptional, NumberRule::positive("kg/m^3")).value_or(1025.0);
+  const double rho =
+      w.number("density", Need::kOptional, NumberRule::positive("kg/m^3")).value_or(1025.0);
   double depth = std::numeric_limits<double>::infinity();
   if (const YAML::Node d = w.get("depth", Need::kRequired, "the water depth in m, or infinite");
       d.IsDefined()) {
     if (!(d.IsScalar() && d.Scalar() == "infinite"))
-      depth = read_number(ctx.diag, d, w.key_path("depth"), NumberRule::positive("m")).value_or(depth);
+      depth =
+          read_number(ctx.diag, d, w.key_path("depth"), NumberRule::positive("m")).value_or(depth);
   }
   w.finish();
   if (!(g > 0.0)) {
@@ -337,7 +353,8 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
         }
         const auto x = read_number(ctx.diag, xy[0], pr.key_path(name), NumberRule::any("m"));
         const auto y = read_number(ctx.diag, xy[1], pr.key_path(name), NumberRule::any("m"));
-        if (x && y) ctx.model.wave_probes.emplace_back(fmt::format("wave.eta.{}", name), Vec3(*x, *y, 0));
+        if (x && y)
+          ctx.model.wave_probes.emplace_back(fmt::format("wave.eta.{}", name), Vec3(*x, *y, 0));
       }
   }
 }
@@ -358,7 +375,8 @@ void load_hydrodynamics(const YAML::Node& node, LoadContext& ctx) {
     if (!body) {
       std::vector<std::string> names;
       for (const auto& b : ctx.system.bodies()) names.push_back(b->name());
-      if (std::find(ctx.failed_bodies.begin(), ctx.failed_bodies.end(), name) == ctx.failed_bodies.end())
+      if (std::find(ctx.failed_bodies.begin(), ctx.failed_bodies.end(), name) ==
+          ctx.failed_bodies.end())
         ctx.diag.error(kv.first.Mark(), path,
                        fmt::format("no body named '{}'; {}", name, suggestion(name, names)));
       continue;
@@ -372,7 +390,8 @@ void load_hydrodynamics(const YAML::Node& node, LoadContext& ctx) {
       r.finish();
     } else {
       r.error("", fmt::format("body '{}' is a {}: hydrodynamics apply to ancf_beam and "
-                              "rigid_body bodies", name, body->kind()));
+                              "rigid_body bodies",
+                              name, body->kind()));
     }
   }
 }

@@ -30,8 +30,7 @@ using SimulationProgress = std::function<void(double, double)>;
 
 class Simulation {
  public:
-  Simulation(Dae& dae, ChannelList channels, Integrator& integrator,
-             SimulationSettings settings);
+  Simulation(Dae& dae, ChannelList channels, Integrator& integrator, SimulationSettings settings);
 
   void add_recorder(Recorder& recorder) { recorders_.push_back(&recorder); }
   void set_progress(SimulationProgress progress) { progress_ = std::move(progress); }
