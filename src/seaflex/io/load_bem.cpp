@@ -42,7 +42,8 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
         hydro::read_wamit(stem.string(), hydro::WamitUnits{ocean.rho(), g_bem, ulen}));
   } catch (const InputError& e) {
     for (const auto& d : e.diagnostics())
-      b.error("wamit", fmt::format("{}:{}: {}: {}", d.file, d.line, d.key, d.message));
+      b.error("wamit", d.line > 0 ? fmt::format("{}:{}: {}: {}", d.file, d.line, d.key, d.message)
+                                  : fmt::format("{}: {}", d.file, d.message));
     return;
   }
   if (!db->has_added_mass_inf)
@@ -72,11 +73,11 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
     } else {
       for (const auto& c : ocean.waves().components()) {
         if (c.omega < db->omega.front() || c.omega > db->omega.back()) {
-          ctx.model.warnings.push_back(
-              fmt::format("{}: a wave frequency {:.4g} rad/s lies outside the BEM range "
-                          "[{:.4g}, {:.4g}] "
-                          "rad/s of {}; the RAO of the nearest tabulated frequency is used",
-                          b.path(), c.omega, db->omega.front(), db->omega.back(), stem.string()));
+          ctx.model.warnings.push_back(fmt::format(
+              "{}:{}:{}: {}: a wave frequency {:.4g} rad/s lies outside the BEM range [{:.4g}, "
+              "{:.4g}] rad/s of {}; the RAO of the nearest tabulated frequency is used",
+              ctx.diag.file(), b.mark().line + 1, b.mark().column + 1, b.path(), c.omega,
+              db->omega.front(), db->omega.back(), stem.string()));
           break;
         }
       }

@@ -36,7 +36,13 @@ std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double
     const auto ws = w.choice("wheeler_stretching", Need::kRequired, {"true", "false"});
     wheeler = ws.value_or("true") == "true";
   }
-  if (!type) return std::nullopt;
+  if (!type) {
+    // the keys of every kind are known: only the type is reported
+    for (const char* k : {"height", "period", "phase", "hs", "tp", "gamma", "seed", "components",
+                          "omega_min", "omega_max"})
+      w.has(k);
+    return std::nullopt;
+  }
   std::vector<hydro::WaveComponent> components;
   if (*type == "airy") {
     const auto height = w.number("height", Need::kRequired, NumberRule::positive("m"));
@@ -81,6 +87,7 @@ std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double
 std::optional<hydro::CurrentProfile> read_current(MapReader& c) {
   const bool uniform = c.has("speed"), profiled = c.has("profile");
   if (uniform == profiled) {
+    c.has("direction");
     c.error(uniform ? "profile" : "speed",
             "give either speed (m/s) and direction (deg) for a uniform current, or profile "
             "[[z, speed, direction], ...]");
@@ -216,7 +223,14 @@ void load_hull(const YAML::Node& node, const std::string& path, const RigidBody&
       }
       if (a && b && d) pieces.push_back(hydro::ConvexPolyhedron::cylinder(*a, *b, *d));
     } else {
-      item.error("box", "each hull piece is a box or a cylinder");
+      std::string given;
+      for (const auto& kv : node[i]) {
+        given += (given.empty() ? "" : ", ") + kv.first.as<std::string>();
+        item.has(kv.first.as<std::string>());
+      }
+      ctx.diag.error(
+          node[i].Mark(), p,
+          fmt::format("a hull piece is box: {{...}} or cylinder: {{...}}, got {}", given));
     }
     item.finish();
   }
