@@ -249,6 +249,40 @@ class Cli(unittest.TestCase):
         header, rows = read_csv(os.path.join(out, "statics_partial.csv"))
         self.assertEqual(len(rows), 1)
 
+    def test_hemisphere_in_regular_waves(self):
+        out = os.path.join(self.dir, "hemi")
+        r = run("run", os.path.join(EXAMPLES, "hemisphere_in_waves.yaml"), "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        for name in ["wave.eta", "wave.eta.east", "sphere.excitation.fz", "sphere.radiation.fz"]:
+            self.assertIn(name, header)
+        t = header.index("time")
+        z = [row[header.index("sphere.z")] + 2.0 for row in rows if row[t] > 100.0]
+        # steady heave at resonance: |X3| a / |C33 - w^2 (M + A33) + i w B33| = 0.184998 m
+        # from the same WAMIT files (tests/verification/test_floating_sphere.cpp); 0.5 %
+        self.assertAlmostEqual((max(z) - min(z)) / 2 / 0.184998, 1.0, delta=5e-3)
+        # the probe 20 m down-wave sees the same wave later: |eta| never exceeds a = 0.1 m
+        eta = [row[header.index("wave.eta.east")] for row in rows]
+        self.assertLessEqual(max(abs(e) for e in eta), 0.1 + 1e-12)
+        self.assertGreater(max(abs(e) for e in eta), 0.099)
+
+    def test_riser_bows_with_the_current_in_statics(self):
+        out = os.path.join(self.dir, "riser")
+        r = run("statics", os.path.join(EXAMPLES, "riser_in_current.yaml"), "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "statics.csv"))
+        row = rows[0]
+        x = [row[header.index("riser.n%d.x" % k)] for k in range(21)]
+        # pinned at the seabed, held horizontally at the top
+        self.assertAlmostEqual(x[0], 0.0, delta=1e-12)
+        self.assertAlmostEqual(x[20], 0.0, delta=1e-12)
+        # the current flows towards +x: the riser bows downstream, most below mid-depth
+        # where the effective tension is least; every interior node moves downstream
+        self.assertTrue(all(v > 0.0 for v in x[1:20]))
+        self.assertGreater(max(x), 5.0)
+        self.assertLess(x.index(max(x)), 10)
+        self.assertEqual(row[header.index("wave.eta")], 0.0)  # before the wave ramp
+
 
 if __name__ == "__main__":
     unittest.main(argv=[sys.argv[0], "-v"])

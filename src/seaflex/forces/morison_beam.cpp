@@ -86,7 +86,8 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, co
   const double ci = rho * c.cm * area;
   const Vec3 an = fl.acceleration - tt.dot(fl.acceleration) * tt;
   out.f = cd * unn * un + cax * std::abs(ua) * ua * tt + ci * an;
-  if (c.buoyancy && with_buoyancy) out.f.z() += load_factor * rho * ocean_->g() * area;
+  if (c.buoyancy && with_buoyancy) out.f.z() += rho * ocean_->g() * area;
+  out.f *= load_factor;  // an external load: statics steps it in with the load factor
   if (!derivatives) return out;
   // d f / d u_n of the drag, and the derivatives through u = U - r_dot and t = r'/|r'|
   Mat3 Dn = cd * unn * Mat3::Identity();
@@ -99,7 +100,8 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, co
       cax * (2.0 * std::abs(ua) * tt * u.transpose() + std::abs(ua) * ua * Mat3::Identity());
   const Mat3 dfi_dt =
       -ci * (tt * fl.acceleration.transpose() + tt.dot(fl.acceleration) * Mat3::Identity());
-  out.df_drp = (Dn * dun_dt + dfa_dt + dfi_dt) * dt_drp;
+  out.df_drp = load_factor * (Dn * dun_dt + dfa_dt + dfi_dt) * dt_drp;
+  out.df_dv *= load_factor;
   return out;
 }
 
