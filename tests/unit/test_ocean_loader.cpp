@@ -7,6 +7,7 @@
 #include <string>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/forces/rigid_body_load.hpp"
 #include "seaflex/io/model_loader.hpp"
 
 using namespace seaflex;
@@ -174,6 +175,36 @@ TEST(OceanLoader, BemFilesAndTheirErrors) {
   EXPECT_EQ(error_of(floating("    bem:\n      wamit: " + kSphere + "\n      radiation: fast\n")),
             "m.yaml:14:18: hydrodynamics.buoy.bem.radiation: unknown value 'fast'; expected one "
             "of: convolution, state_space, none");
+}
+
+}  // namespace
+
+namespace {
+
+TEST(OceanLoader, DampingMatricesAtTheReferencePoint) {
+  // f = -B1 v - B2 |v| v on the six body-axis velocities of the reference point u; the
+  // force acts at u: the moment about the CG adds u x f. Exact arithmetic: 1e-9 relative.
+  const std::string hydro =
+      "    reference_point: [3, 0, 0]\n"
+      "    linear_damping: [[1e4,0,0,0,0,0], [0,2e4,0,0,0,0], [0,0,3e4,0,0,0], "
+      "[0,0,0,0,0,0], [0,0,0,0,0,0], [0,0,0,0,0,5e6]]\n"
+      "    quadratic_damping: [[0,0,0,0,0,0], [0,0,0,0,0,0], [0,0,7e4,0,0,0], "
+      "[0,0,0,0,0,0], [0,0,0,0,0,0], [0,0,0,0,0,0]]\n";
+  const io::Model m = io::load_model_text(floating(hydro), "m.yaml");
+  const RigidBodyLoad* load = nullptr;
+  for (const auto& f : m.system->forces())
+    if (f->name() == "buoy.hydro_matrices") load = dynamic_cast<const RigidBodyLoad*>(f.get());
+  ASSERT_NE(load, nullptr);
+  State s = m.system->initial_state();
+  s.v.head<3>() = Vec3(0.5, 0.0, -0.2);  // CG velocity
+  // yaw rate 0.1 rad/s: p' = 1/2 G^T w for p = (1, 0, 0, 0)
+  s.v.segment<4>(3) = Eigen::Vector4d(0, 0, 0, 0.05);
+  const Wrench W = load->wrench_at(s);
+  // the point u = (3, 0, 0) moves at v + w x u = (0.5, 0.3, -0.2)
+  const Vec3 f(-1e4 * 0.5, -2e4 * 0.3, -3e4 * -0.2 - 7e4 * 0.2 * -0.2);
+  EXPECT_NEAR((W.force - f).norm(), 0.0, 1e-9 * f.norm());
+  const Vec3 moment = Vec3(0, 0, -5e6 * 0.1) + Vec3(3, 0, 0).cross(f);
+  EXPECT_NEAR((W.moment - moment).norm(), 0.0, 1e-9 * moment.norm());
 }
 
 }  // namespace

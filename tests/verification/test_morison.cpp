@@ -310,3 +310,39 @@ hydrodynamics:
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Morison, AxialDragAndContentsWeight) {
+  // current along the pipe's axis: only the axial (skin) drag 1/2 rho Cd_ax pi D U^2 L;
+  // contents of density 1100 kg/m^3 in the bore add their weight rho_i A_i g L downward.
+  // Constants integrated exactly: 1e-10 relative.
+  const std::string yaml = R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 200}
+  current: {speed: 2.0, direction: 0}
+bodies:
+  pipe:
+    type: ancf_beam
+    start: [0, 0, -20]
+    end: [30, 0, -20]
+    elements: 5
+    outer_diameter: 0.7
+    inner_diameter: 0.4
+    youngs_modulus: 210e9
+    density: 7850
+hydrodynamics:
+  pipe: {cd: 0.65, cd_axial: 0.008, cm: 1.6, buoyancy: false, contents_density: 1100}
+)";
+  const io::Model m = io::load_model_text(yaml, "pipe.yaml");
+  const State s = m.system->initial_state();
+  const Vec3 F = beam_resultant(force_vector(m, force_named(m, "pipe.morison"), s), 0, 6);
+  const double axial = 0.5 * 1025 * 0.008 * kPi * 0.7 * 4.0 * 30;
+  const double contents = 1100 * 0.25 * kPi * 0.16 * 9.81 * 30;
+  EXPECT_NEAR(F.x(), axial, 1e-10 * axial);
+  EXPECT_NEAR(F.y(), 0.0, 1e-10 * axial);
+  EXPECT_NEAR(F.z(), -contents, 1e-10 * contents);
+}
+
+}  // namespace

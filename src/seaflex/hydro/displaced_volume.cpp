@@ -101,7 +101,8 @@ double ConvexPolyhedron::volume() const {
 
 Displacement submerged_part(const ConvexPolyhedron& hull, const Vec3& r, const Mat3& R) {
   Displacement d;
-  std::vector<Vec3> poly, cut;
+  // scratch reused between calls: no allocation once warm
+  thread_local std::vector<Vec3> poly, cut;
   double V = 0.0, mx = 0.0, my = 0.0, mz = 0.0, awp = 0.0;
   for (const auto& f : hull.faces) {
     poly.clear();
