@@ -83,6 +83,16 @@ Wrench RigidMorison::wrench(const RigidBodyMotion& m) const {
       }
       W.add_at(f * ds, x, m.r);
     }
+    if (mem.end_effects) {
+      // p_d A on each wet end face, pushing along the inward normal (+t at a, -t at b)
+      for (int end = 0; end < 2; ++end) {
+        if ((end == 0 && s0 > 0.0) || (end == 1 && s1 < 1.0)) continue;  // end above water
+        const Vec3 x = m.point(end == 0 ? mem.a : mem.b);
+        const hydro::FluidPoint fl = ocean_->fluid(x, m.t);
+        if (!fl.wet) continue;
+        W.add_at((end == 0 ? 1.0 : -1.0) * fl.dynamic_pressure * area * t, x, m.r);
+      }
+    }
   }
   return W;
 }

@@ -16,6 +16,7 @@ FluidPoint Ocean::fluid(const Vec3& p, double t) const {
     if (!k.wet) return out;
     out.velocity = k.velocity;
     out.acceleration = k.acceleration;
+    out.dynamic_pressure = k.dynamic_pressure;
   } else if (p.z() > 0.0) {
     return out;
   }

@@ -17,6 +17,7 @@ namespace seaflex::hydro {
 struct FluidPoint {
   Vec3 velocity = Vec3::Zero();
   Vec3 acceleration = Vec3::Zero();
+  double dynamic_pressure = 0.0;  ///< wave pressure (Pa), without the hydrostatic -rho g z
   bool wet = false;
 };
 

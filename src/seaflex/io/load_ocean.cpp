@@ -260,6 +260,9 @@ void load_members(const YAML::Node& node, const std::string& path, const RigidBo
     mem.ca = m.number("ca", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
                  .value_or(std::max(0.0, mem.cm - 1.0));
     mem.strips = m.integer("strips", Need::kOptional, 1, 64).value_or(10);
+    if (m.has("end_effects"))
+      mem.end_effects =
+          m.choice("end_effects", Need::kRequired, {"true", "false"}).value_or("false") == "true";
     m.finish();
     if (a && b && (*a - *b).norm() == 0.0) {
       m.error("end_b", "coincides with end_a: a member needs a length");
