@@ -104,7 +104,7 @@ void print_summary(const io::Model& model) {
   fmt::print("gravity: ({:g}, {:g}, {:g}) m/s^2\n", model.gravity.x(), model.gravity.y(),
              model.gravity.z());
   fmt::print("coordinates: {}, constraint rows: {}, output channels: {}\n", sys.num_coordinates(),
-             sys.num_constraints(), sys.channels().size());
+             sys.num_constraints(), io::model_channels(model).size());
   fmt::print(
       "statics: {} load step(s), tolerance {:g}, max {} iterations per step, loads at t = {:g} s\n",
       model.statics.load_steps, model.statics.tolerance, model.statics.max_iterations,

@@ -208,3 +208,34 @@ TEST(OceanLoader, DampingMatricesAtTheReferencePoint) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(OceanLoader, BemHeadingsMemoryAndDoubleBuoyancy) {
+  const std::string bem = "    bem:\n      wamit: " + kSphere + "\n";
+  // the sphere's data hold the 0 deg heading only: a 30 deg wave warns once
+  const io::Model w = io::load_model_text(
+      floating(bem, "  waves: {type: airy, height: 1, period: 5, direction: 30}\n"), "m.yaml");
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_EQ(w.warnings[0],
+            "m.yaml:14:7: hydrodynamics.buoy.bem: a wave heading of 30 deg relative "
+            "to the body lies outside the headings of " +
+                kSphere + "; the RAO of the nearest tabulated heading is used");
+  EXPECT_EQ(error_of(floating(bem + "      memory: 0.01\n")),
+            "m.yaml:14:15: hydrodynamics.buoy.bem.memory: must be at least kernel_time_step (0.05 "
+            "s), got 0.01 s");
+  const io::Model d = io::load_model_text(
+      floating("    hull:\n      - box: {center: [0, 0, 0], size: [10, 10, 4]}\n" + bem +
+               "      displaced_volume: 200\n"),
+      "m.yaml");
+  ASSERT_EQ(d.warnings.size(), 1u);
+  EXPECT_EQ(d.warnings[0],
+            "m.yaml:14:7: hydrodynamics.buoy.bem: both a hull and a BEM "
+            "displaced_volume give buoyancy: it is counted twice; drop one of them");
+  EXPECT_EQ(error_of(floating("    hull:\n      - {box: {center: [0, 0, 0], size: [1, 1, 1]}, "
+                              "cylinder: {end_a: [0, 0, 0], end_b: [0, 0, 1], diameter: 1}}\n")),
+            "m.yaml:13:9: hydrodynamics.buoy.hull[0]: a hull piece is a box or a cylinder, not "
+            "both: give each as its own item");
+}
+
+}  // namespace

@@ -112,8 +112,9 @@ TEST(FloatingSphere, HeaveDecayPeriodFromCummins) {
   const auto c = upward_crossings(conv);
   ASSERT_GE(c.size(), 2u);
   const double period = c[1] - c[0];
-  // the damped period of the decay exceeds the undamped one by the damping (about 0.6 %
-  // here, see tests/unit/test_radiation.cpp); 1 % asked by the issue
+  // the first zero-crossing interval of the decay differs from the root of
+  // w^2 (M + A33(w)) = C33 by the memory's damping and frequency dependence (0.1 % here);
+  // 1 % asked by the issue
   EXPECT_NEAR(period, 2 * kPi / wn, 0.01 * 2 * kPi / wn);
   std::printf("sphere heave: decay period %.4f s, w^2 (M + A33(w)) = C33 gives %.4f s\n", period,
               2 * kPi / wn);

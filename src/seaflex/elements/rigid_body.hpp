@@ -47,6 +47,8 @@ class RigidBody : public Body {
   double step_scale(const State& state, const VecX& dq) const override;
 
   double mass() const { return mass_; }
+  /// The initial position, attitude and velocities, as built.
+  const RigidBodyInitial& initial() const { return initial_; }
   const Mat3& inertia() const { return inertia_; }
 
   Vec3 position(const State& state) const;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <numbers>
 
 #include "seaflex/forces/radiation_force.hpp"
 #include "seaflex/forces/rao_excitation.hpp"
@@ -33,6 +34,11 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
   const bool hydrostatics = b.has("displaced_volume");
   const auto volume = b.number("displaced_volume", Need::kOptional, NumberRule::positive("m^3"));
   const auto still = b.vec3("still_water_position", Need::kOptional, "m");
+  if (memory < kdt) {
+    b.error("memory",
+            fmt::format("must be at least kernel_time_step ({} s), got {} s", kdt, memory));
+    return;
+  }
   if (!file) return;
   std::filesystem::path stem(*file);
   if (stem.is_relative()) stem = std::filesystem::path(ctx.diag.file()).parent_path() / stem;
@@ -71,6 +77,19 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
                                    "false to run without wave excitation",
                                    stem.string()));
     } else {
+      bool heading_warned = false;
+      for (const auto& c : ocean.waves().components()) {
+        bool clamped = false;
+        db->excitation_at(c.omega, c.direction - set.heading, nullptr, &clamped);
+        if (clamped && !heading_warned) {
+          heading_warned = true;
+          ctx.model.warnings.push_back(fmt::format(
+              "{}:{}:{}: {}: a wave heading of {:.4g} deg relative to the body lies outside the "
+              "headings of {}; the RAO of the nearest tabulated heading is used",
+              ctx.diag.file(), b.mark().line + 1, b.mark().column + 1, b.path(),
+              (c.direction - set.heading) * 180.0 / std::numbers::pi, stem.string()));
+        }
+      }
       for (const auto& c : ocean.waves().components()) {
         if (c.omega < db->omega.front() || c.omega > db->omega.back()) {
           ctx.model.warnings.push_back(fmt::format(

@@ -12,6 +12,7 @@
 #include "seaflex/forces/rigid_morison.hpp"
 #include "seaflex/hydro/wave_spectrum.hpp"
 #include "seaflex/io/load_context.hpp"
+#include "seaflex/math/rotation.hpp"
 
 namespace seaflex::io {
 
@@ -79,7 +80,9 @@ std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double
   try {
     return hydro::irregular_components(spec, depth, g);
   } catch (const std::invalid_argument& e) {
-    w.error("type", e.what());
+    // the spectrum's own checks: the band (omega_min alone above the default top)
+    const std::string what = e.what();
+    w.error(what.find("omega") != std::string::npos ? "omega_min" : "type", what);
     return std::nullopt;
   }
 }
@@ -198,6 +201,11 @@ void load_hull(const YAML::Node& node, const std::string& path, const RigidBody&
     const std::string p = fmt::format("{}[{}]", path, i);
     MapReader item(ctx.diag, node[i], p);
     if (!item.valid()) continue;
+    if (item.has("box") && item.has("cylinder")) {
+      ctx.diag.error(node[i].Mark(), p,
+                     "a hull piece is a box or a cylinder, not both: give each as its own item");
+      continue;
+    }
     if (item.has("box")) {
       MapReader b(ctx.diag, item.get("box"), p + ".box");
       const auto center = read_point(b, "center", Need::kRequired);
@@ -286,6 +294,7 @@ void load_rigid_hydro(MapReader& r, const RigidBody& body, LoadContext& ctx) {
     load_members(n, r.key_path("morison"), body, ctx);
 
   HydroMatrixSet set;
+  set.heading = math::roll_pitch_yaw_from_rotation(body.initial().orientation)[2];
   set.rho = ocean.rho();
   set.g = ocean.g();
   set.reference = read_point(r, "reference_point", Need::kOptional).value_or(Vec3::Zero());
@@ -300,6 +309,11 @@ void load_rigid_hydro(MapReader& r, const RigidBody& body, LoadContext& ctx) {
 
   if (r.has("bem")) {
     MapReader b(ctx.diag, r.get("bem"), r.key_path("bem"));
+    if (r.has("hull") && b.has("displaced_volume"))
+      ctx.model.warnings.push_back(fmt::format(
+          "{}:{}:{}: {}: both a hull and a BEM displaced_volume give buoyancy: it is counted "
+          "twice; drop one of them",
+          ctx.diag.file(), b.mark().line + 1, b.mark().column + 1, b.path()));
     load_bem(b, body, set, ctx);
     b.finish();
     any = true;
