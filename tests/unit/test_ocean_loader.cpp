@@ -230,7 +230,7 @@ TEST(OceanLoader, BemHeadingsMemoryAndDoubleBuoyancy) {
       "m.yaml");
   ASSERT_EQ(d.warnings.size(), 1u);
   EXPECT_EQ(d.warnings[0],
-            "m.yaml:14:7: hydrodynamics.buoy.bem: both a hull and a BEM "
+            "m.yaml:15:7: hydrodynamics.buoy.bem: both a hull and a BEM "
             "displaced_volume give buoyancy: it is counted twice; drop one of them");
   EXPECT_EQ(error_of(floating("    hull:\n      - {box: {center: [0, 0, 0], size: [1, 1, 1]}, "
                               "cylinder: {end_a: [0, 0, 0], end_b: [0, 0, 1], diameter: 1}}\n")),
