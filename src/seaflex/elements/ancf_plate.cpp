@@ -40,8 +40,10 @@ AncfPlate::AncfPlate(std::string name, PlateGeometry geometry, ancf_plate::Plate
   const double l1 = geometry.edge1.norm(), l2 = geometry.edge2.norm();
   if (!(l1 > 0.0) || !(l2 > 0.0))
     throw std::invalid_argument("AncfPlate: the edge vectors must not be zero");
-  if (std::abs(t1_.dot(t2_)) > 1e-9)
+  if (std::abs(t1_.dot(t2_)) > 1e-6)
     throw std::invalid_argument("AncfPlate: the edge vectors must be perpendicular");
+  // input rounded to a few digits: make the reference exactly orthonormal (no initial strain)
+  t2_ = (t2_ - t2_.dot(t1_) * t1_).normalized();
   mass_ = ancf_plate::mass_matrix(material_.mass_per_area(), a_, b_);
   for (int ei = 0; ei < nx(); ++ei)
     for (int ej = 0; ej < ny(); ++ej) {

@@ -34,7 +34,8 @@ struct PlateOptions {
 class AncfPlate : public Body {
  public:
   /// Throws std::invalid_argument for a degenerate rectangle (zero or non-perpendicular
-  /// edges, counts < 1) or an invalid material.
+  /// edges, counts < 1) or an invalid material. Edges within 1e-6 (cosine) of perpendicular
+  /// are accepted; the second is then made exactly perpendicular to the first.
   AncfPlate(std::string name, PlateGeometry geometry, ancf_plate::PlateMaterial material,
             PlateOptions options);
 
