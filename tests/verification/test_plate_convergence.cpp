@@ -31,9 +31,13 @@ TEST(PlateConvergence, SelfWeightEveryModel) {
     for (int n : kMeshes) {
       const double w = centre_deflection({n, "simply_supported", m, t, 1.0, "free"});
       std::printf("  %.6f (%+.2f%%)", w, 100.0 * (w / ref - 1.0));
-      if (n >= 8) EXPECT_NEAR(w / ref, 1.0, 0.01) << m << "/" << t << " " << n;
+      if (n >= 8) {
+        EXPECT_NEAR(w / ref, 1.0, 0.01) << m << "/" << t << " " << n;
+      }
       if (n == 8) w8 = w;
-      if (n == 16) EXPECT_NEAR(w / w8, 1.0, 1e-3) << m << "/" << t;
+      if (n == 16) {
+        EXPECT_NEAR(w / w8, 1.0, 1e-3) << m << "/" << t;
+      }
     }
     std::printf("\n");
   }
@@ -50,7 +54,9 @@ TEST(PlateConvergence, LinearRangeDefaultModel) {
       const double w =
           100.0 * centre_deflection({n, "simply_supported", "exact", "exact", 0.01, ip});
       std::printf("  %.7f (%+.3f%%)", w, 100.0 * (w / ref - 1.0));
-      if (n == 16) EXPECT_NEAR(w / ref, 1.0, 1e-4) << ip;
+      if (n == 16) {
+        EXPECT_NEAR(w / ref, 1.0, 1e-4) << ip;
+      }
     }
     std::printf("\n");
   }

@@ -82,8 +82,9 @@ std::unique_ptr<Body> build_ancf_plate(MapReader& reader, const std::string& nam
 std::unique_ptr<Force> build_plate_pressure(MapReader& reader, const std::string& name,
                                             LoadContext& ctx);
 /// The plate named by the `body` key of a support, or nullptr (without reporting) when
-/// the body is not a plate.
-const AncfPlate* plate_of(const YAML::Node& support, const LoadContext& ctx);
+/// the body is not a plate; *skip is set when the body failed to build and the support
+/// is written for a plate (it is then not checked).
+const AncfPlate* plate_of(const YAML::Node& support, const LoadContext& ctx, bool* skip);
 /// One support of a plate: edges or a node. held: (body, local coordinate) already held.
 void load_plate_support(MapReader& reader, const AncfPlate& plate, const YAML::Node& node,
                         std::set<std::pair<std::string, Index>>& held, LoadContext& ctx);

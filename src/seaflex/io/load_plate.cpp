@@ -85,10 +85,12 @@ std::unique_ptr<Body> build_ancf_plate(MapReader& r, const std::string& name, Lo
       r.get("elements", Need::kRequired, "[n1, n2], the numbers of elements along edge1 and edge2");
   if (el.IsDefined()) {
     if (!el.IsSequence() || el.size() != 2) {
-      r.error("elements",
-              fmt::format("expected [n1, n2], the numbers of elements along edge1 and "
-                          "edge2, got {}",
-                          el.IsSequence() ? fmt::format("{} entries", el.size()) : describe(el)));
+      const std::string got = !el.IsSequence() ? describe(el)
+                              : el.size() == 1 ? std::string("1 entry")
+                                               : fmt::format("{} entries", el.size());
+      r.error("elements", fmt::format("expected [n1, n2], the numbers of elements along edge1 and "
+                                      "edge2, got {}",
+                                      got));
     } else {
       nx = read_integer(r.diagnostics(), el[0], r.key_path("elements") + "[0]", 1, kMaxPerEdge);
       ny = read_integer(r.diagnostics(), el[1], r.key_path("elements") + "[1]", 1, kMaxPerEdge);
@@ -181,10 +183,22 @@ std::unique_ptr<Body> build_ancf_plate(MapReader& r, const std::string& name, Lo
   return std::make_unique<AncfPlate>(name, g, mat, options);
 }
 
-const AncfPlate* plate_of(const YAML::Node& support, const LoadContext& ctx) {
+const AncfPlate* plate_of(const YAML::Node& support, const LoadContext& ctx, bool* skip) {
+  *skip = false;
   if (!support.IsMap()) return nullptr;
   const YAML::Node b = support["body"];
   if (!b.IsDefined() || !b.IsScalar()) return nullptr;
+  const auto& failed = ctx.failed_bodies;
+  if (std::find(failed.begin(), failed.end(), b.Scalar()) != failed.end()) {
+    // a body that could not be built (reported there): a support written for a plate is
+    // not checked against it
+    const YAML::Node type = support["type"], node = support["node"];
+    *skip = support["edges"].IsDefined() || support["in_plane"].IsDefined() ||
+            (type.IsScalar() && type.Scalar() == "simply_supported") ||
+            (node.IsScalar() && node.Scalar().size() > 1 && node.Scalar()[0] == 'n' &&
+             node.Scalar().find('_') != std::string::npos);
+    return nullptr;
+  }
   return dynamic_cast<const AncfPlate*>(ctx.system.find_body(b.Scalar()));
 }
 
