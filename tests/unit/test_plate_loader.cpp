@@ -105,6 +105,39 @@ TEST(PlateLoader, PressurePointForceAndMarkers) {
   EXPECT_GT(std::abs(ratio - 1.0), 1e-7);
 }
 
+// a plate joined to a rigid body: a 100 kg box on a fixed joint at node n4_1 of a plate
+// clamped along i0 (the box's marker axes along the plate's r_p1, r_p2 and normal); the
+// joint carries the box's weight: reaction on the box (0, 0, m g) to 1e-9 relative
+// (equilibrium of the box alone), and the plate's free edge sags
+TEST(PlateLoader, PlateJoinedToRigidBody) {
+  const std::string text =
+      replace(kPlate, "supports:",
+              "  box:\n    type: rigid_body\n    mass: 100\n    inertia: [10, 10, 10]\n"
+              "    position: [4, 1, 0]\n"
+              "joints:\n  - {name: weld, type: fixed, from: {body: plate, node: n4_1}, to: "
+              "{body: box}}\nsupports:");
+  const std::string clamped = replace(
+      replace(text, "type: simply_supported, edges: [i0, i_max]", "type: clamped, edges: [i0]"),
+      "  - {type: plate_pressure, body: plate, pressure: -1000}\n", "");
+  io::Model m = io::load_model_text(clamped.substr(0, clamped.find("loads:")), "m.yaml");
+  State s = m.system->initial_state();
+  solve_statics(*m.system, s, m.statics);
+  const auto* plate = dynamic_cast<const AncfPlate*>(m.system->find_body("plate"));
+  EXPECT_LT(s.q[plate->node_index(4, 1) + 2], -1e-4);
+  const auto channels = m.system->channels();
+  auto value = [&](const std::string& name) {
+    const auto it = std::find_if(channels.begin(), channels.end(),
+                                 [&](const Channel& c) { return c.name == name; });
+    EXPECT_NE(it, channels.end()) << name;
+    return it == channels.end() ? 0.0 : it->value(s);
+  };
+  const double W = 100 * kStandardGravity;
+  EXPECT_NEAR(value("weld.fz"), W, 1e-9 * W);
+  EXPECT_NEAR(value("weld.fx"), 0.0, 1e-9 * W);
+  // the box hangs at the node: it moves with it
+  EXPECT_NEAR(value("box.z"), s.q[plate->node_index(4, 1) + 2], 1e-9);
+}
+
 struct PlateBadCase {
   const char* what;
   std::string text;
