@@ -161,14 +161,21 @@ class Cli(unittest.TestCase):
 
     def test_plate_bad_input(self):
         text = open(os.path.join(EXAMPLES, "plate_simply_supported.yaml")).read()
-        path = self.model(text.replace("thickness: 0.1 ", "thickness: -0.1").replace(
-            "edges: [i0, i_max, j0, j_max]", "edges: [i0, i_max, j0, k_max]"), "bad.yaml")
+        lines = text.split("\n")
+        thickness = 1 + next(i for i, l in enumerate(lines) if "thickness:" in l)
+        edges = 1 + next(i for i, l in enumerate(lines) if "edges:" in l)
+        # a plate that cannot be built: its supports are not checked against it
+        path = self.model(text.replace("thickness: 0.1 ", "thickness: -0.1"), "bad.yaml")
         r = run("check", path)
         self.assertEqual(r.returncode, 2)
-        self.assertIn("bad.yaml:18:16: bodies.plate.thickness: must be greater than 0 m, got -0.1",
-                      r.stderr)
-        self.assertIn("bad.yaml:29:31: supports[0].edges[3]: plate 'plate' has no edge 'k_max'; "
-                      "did you mean 'j_max'?", r.stderr)
+        self.assertTrue(r.stderr.endswith(
+            "bad.yaml:%d:16: bodies.plate.thickness: must be greater than 0 m, got -0.1\n"
+            % thickness), r.stderr)
+        path = self.model(text.replace("j0, j_max]", "j0, k_max]"), "bad2.yaml")
+        r = run("statics", path, "-o", os.path.join(self.dir, "out"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("bad2.yaml:%d:28: supports[0].edges[3]: plate 'plate' has no edge 'k_max'; "
+                      "did you mean 'i_max'?" % edges, r.stderr)
 
     def test_modes(self):
         path = self.model(CANTILEVER.replace("gravity: 9.81", "gravity: 0"))
