@@ -14,6 +14,22 @@ inline double cantilever_tip_deflection(double q, double L, double EI) {
   return q * L * L * L * L / (8.0 * EI);
 }
 
+/// Navier's series for the centre deflection of a simply supported rectangular Kirchhoff
+/// plate a x b under a uniform load q (Pa), D the flexural rigidity (N m) (thesis eq. 181;
+/// Timoshenko & Woinowsky-Krieger 1959, sec. 30):
+///   w = 16 q / (pi^6 D) sum_{m, n odd} (-1)^((m + n)/2 - 1) / (m n (m^2/a^2 + n^2/b^2)^2)
+/// summed while m, n <= terms (the series converges like 1/m^5).
+inline double navier_plate_centre(double q, double a, double b, double D, int terms = 401) {
+  double sum = 0.0;
+  for (int m = 1; m <= terms; m += 2)
+    for (int n = 1; n <= terms; n += 2) {
+      const double sign = ((m + n) / 2 - 1) % 2 == 0 ? 1.0 : -1.0;
+      const double k = m * m / (a * a) + n * n / (b * b);
+      sum += sign / (m * n * k * k);
+    }
+  return 16.0 * q / (std::pow(std::numbers::pi, 6) * D) * sum;
+}
+
 /// Euler-Bernoulli clamped-free beam: beta_n L, roots of cos(x) cosh(x) = -1.
 inline constexpr double kCantileverBetaL[] = {1.8751040687, 4.6940911330, 7.8547574382};
 

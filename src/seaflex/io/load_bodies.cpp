@@ -262,6 +262,7 @@ const std::map<std::string, BodyBuilder>& body_builders() {
   static const std::map<std::string, BodyBuilder> builders{
       {"ancf_beam", build_ancf_beam},
       {"rigid_body", build_rigid_body},
+      {"ancf_plate", build_ancf_plate},
   };
   return builders;
 }

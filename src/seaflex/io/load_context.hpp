@@ -11,9 +11,11 @@
 #include <vector>
 
 #include "seaflex/elements/ancf_beam.hpp"
+#include "seaflex/elements/ancf_plate.hpp"
 #include "seaflex/forces/hydro_matrices.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/yaml_reader.hpp"
+#include "seaflex/model/time_signal.hpp"
 
 namespace seaflex::io {
 
@@ -71,6 +73,24 @@ const std::map<std::string, IntegratorBuilder>& integrator_builders();
 /// [phi, theta, psi] (deg, thesis eq. 136) or, when allow_axis, `axis` [x, y, z] (the z
 /// axis; x and y completed); identity when none is given, nullopt after an error.
 std::optional<Mat3> read_orientation(MapReader& reader, bool allow_axis);
+
+/// A load's time factor from optional `ramp` or `factor_table` (load_loads.cpp); constant 1
+/// when neither is given, nullopt after an error.
+std::optional<TimeSignal> read_time_factor(MapReader& reader);
+
+// ANCF plates (load_plate.cpp): the body, its supports, markers at its nodes, pressure
+std::unique_ptr<Body> build_ancf_plate(MapReader& reader, const std::string& name, LoadContext&);
+std::unique_ptr<Force> build_plate_pressure(MapReader& reader, const std::string& name,
+                                            LoadContext& ctx);
+/// The plate named by the `body` key of a support, or nullptr (without reporting) when
+/// the body is not a plate; *skip is set when the body failed to build and the support
+/// is written for a plate (it is then not checked).
+const AncfPlate* plate_of(const YAML::Node& support, const LoadContext& ctx, bool* skip);
+/// One support of a plate: edges or a node. held: (body, local coordinate) already held.
+void load_plate_support(MapReader& reader, const AncfPlate& plate, const YAML::Node& node,
+                        std::set<std::pair<std::string, Index>>& held, LoadContext& ctx);
+/// A marker at a plate node (`node: n<i>_<j>`), after reporting other keys as errors.
+std::unique_ptr<Marker> plate_marker(MapReader& reader, const AncfPlate& plate);
 
 void load_bodies(const YAML::Node& node, LoadContext& ctx);
 void load_markers(const YAML::Node& node, LoadContext& ctx);

@@ -8,6 +8,41 @@
 
 namespace seaflex::io {
 
+std::optional<TimeSignal> read_time_factor(MapReader& r) {
+  const bool ramp = r.has("ramp"), factor = r.has("factor_table");
+  if (ramp && factor) {
+    r.error("factor_table", "give either ramp or factor_table, not both");
+    return std::nullopt;
+  }
+  TimeSignal signal = TimeSignal::constant(1.0);
+  bool ok = true;
+  if (ramp) {
+    MapReader rr(r.diagnostics(), r.get("ramp"), r.key_path("ramp"));
+    const auto start = rr.number("start", Need::kOptional, NumberRule::nonnegative("s"));
+    const auto duration = rr.number("duration", Need::kRequired, NumberRule::nonnegative("s"));
+    rr.finish();
+    if (rr.valid() && duration)
+      signal = TimeSignal::ramp(start.value_or(0.0), *duration);
+    else
+      ok = false;
+  }
+  if (factor) {
+    const auto rows = r.table("factor_table", Need::kRequired, 2);
+    if (rows) {
+      std::vector<double> times, values;
+      for (const auto& row : *rows) {
+        times.push_back(row[0]);
+        values.push_back(row[1]);
+      }
+      signal = TimeSignal::table(std::move(times), std::move(values));
+    } else {
+      ok = false;
+    }
+  }
+  if (!ok) return std::nullopt;
+  return signal;
+}
+
 namespace {
 
 // `key`: [x, y, z] with optional `ramp` / `factor_table`; or `key_table`: [[t, x, y, z], ...]
@@ -41,37 +76,9 @@ std::optional<VectorSignal> read_vector_signal(MapReader& r, const std::string& 
     return std::nullopt;
   }
   const auto value = r.vec3(key, Need::kRequired, unit);
-  if (ramp && factor) {
-    r.error("factor_table", "give either ramp or factor_table, not both");
-    return std::nullopt;
-  }
-  TimeSignal signal = TimeSignal::constant(1.0);
-  bool ok = true;
-  if (ramp) {
-    MapReader rr(r.diagnostics(), r.get("ramp"), r.key_path("ramp"));
-    const auto start = rr.number("start", Need::kOptional, NumberRule::nonnegative("s"));
-    const auto duration = rr.number("duration", Need::kRequired, NumberRule::nonnegative("s"));
-    rr.finish();
-    if (rr.valid() && duration)
-      signal = TimeSignal::ramp(start.value_or(0.0), *duration);
-    else
-      ok = false;
-  }
-  if (factor) {
-    const auto rows = r.table("factor_table", Need::kRequired, 2);
-    if (rows) {
-      std::vector<double> times, values;
-      for (const auto& row : *rows) {
-        times.push_back(row[0]);
-        values.push_back(row[1]);
-      }
-      signal = TimeSignal::table(std::move(times), std::move(values));
-    } else {
-      ok = false;
-    }
-  }
-  if (!value || !ok) return std::nullopt;
-  return VectorSignal(*value, std::move(signal));
+  const auto signal = read_time_factor(r);
+  if (!value || !signal) return std::nullopt;
+  return VectorSignal(*value, std::move(*signal));
 }
 
 // at a beam node or arc length (body + node | arc_length), or at any marker (at: a marker
@@ -150,6 +157,7 @@ const std::map<std::string, ForceBuilder>& load_builders() {
   static const std::map<std::string, ForceBuilder> builders{
       {"point_force", build_point_force},
       {"distributed_load", build_distributed_load},
+      {"plate_pressure", build_plate_pressure},
   };
   return builders;
 }

@@ -126,6 +126,8 @@ std::unique_ptr<Marker> LoadContext::marker(const YAML::Node& node, const std::s
     }
     const auto frame = read_orientation(r, true);
     if (ok && frame) m = std::make_unique<RigidBodyMarker>(*rigid, p, *frame);
+  } else if (const auto* plate = dynamic_cast<const AncfPlate*>(body)) {
+    m = plate_marker(r, *plate);
   } else {
     for (const char* k : {"position", "orientation", "axis", "euler_zxz", "node", "arc_length"})
       r.has(k);

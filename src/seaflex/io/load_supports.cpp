@@ -25,6 +25,12 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
     const std::string path = fmt::format("supports[{}]", i);
     MapReader r(ctx.diag, node[i], path);
     if (!r.valid()) continue;
+    bool skip = false;
+    if (const AncfPlate* plate = plate_of(node[i], ctx, &skip)) {
+      load_plate_support(r, *plate, node[i], held, ctx);
+      continue;
+    }
+    if (skip) continue;
     const AncfBeam* beam = ctx.beam_ref(r, "body");
     const auto type = r.choice("type", Need::kRequired, {"clamped", "pinned", "fixed"});
     std::optional<int> k;
