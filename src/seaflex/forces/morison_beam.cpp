@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "seaflex/hydro/wet_interval.hpp"
+
 namespace seaflex {
 
 namespace {
@@ -42,27 +44,7 @@ std::pair<double, double> MorisonBeam::wet_interval(const State& state, int k) c
     const Vec3 r = ancf_cable::as_nodes(e) * ancf_cable::shape(xi, l);  // thesis eq. (3)
     return r.z() - ocean_->elevation(r.x(), r.y(), state.t);
   };
-  const double f0 = above(0.0), f1 = above(1.0);
-  if (f0 <= 0.0 && f1 <= 0.0) return {0.0, 1.0};
-  if (f0 > 0.0 && f1 > 0.0) return {1.0, 0.0};
-  double lo = 0.0, hi = 1.0, flo = f0, fhi = f1, xi = 0.5;
-  int side = 0;
-  for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {  // Illinois false position
-    xi = (lo * fhi - hi * flo) / (fhi - flo);
-    const double fx = above(xi);
-    if ((fx <= 0.0) == (flo <= 0.0)) {
-      lo = xi;
-      flo = fx;
-      if (side == -1) fhi *= 0.5;
-      side = -1;
-    } else {
-      hi = xi;
-      fhi = fx;
-      if (side == 1) flo *= 0.5;
-      side = 1;
-    }
-  }
-  return f0 <= 0.0 ? std::pair{0.0, xi} : std::pair{xi, 1.0};
+  return hydro::wet_interval(above);
 }
 
 MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, const Vec3& rdot,

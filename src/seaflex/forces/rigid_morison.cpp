@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "seaflex/hydro/wet_interval.hpp"
 #include "seaflex/math/gauss_legendre.hpp"
 #include "seaflex/math/rotation.hpp"
 
@@ -26,29 +27,7 @@ std::pair<double, double> RigidMorison::wet_interval(const MorisonMember& mem,
     const Vec3 x = A + s * (B - A);
     return x.z() - ocean_->elevation(x.x(), x.y(), m.t);
   };
-  const double f0 = above(0.0), f1 = above(1.0);
-  if (f0 <= 0.0 && f1 <= 0.0) return {0.0, 1.0};
-  if (f0 > 0.0 && f1 > 0.0) return {1.0, 0.0};
-  // one crossing: Illinois false position to 1e-10 of the member's length
-  double lo = 0.0, hi = 1.0, flo = f0, fhi = f1;
-  int side = 0;
-  double s = 0.5;
-  for (int it = 0; it < 60 && hi - lo > 1e-10; ++it) {
-    s = (lo * fhi - hi * flo) / (fhi - flo);
-    const double fs = above(s);
-    if ((fs <= 0.0) == (flo <= 0.0)) {
-      lo = s;
-      flo = fs;
-      if (side == -1) fhi *= 0.5;
-      side = -1;
-    } else {
-      hi = s;
-      fhi = fs;
-      if (side == 1) flo *= 0.5;
-      side = 1;
-    }
-  }
-  return f0 <= 0.0 ? std::pair{0.0, s} : std::pair{s, 1.0};
+  return hydro::wet_interval(above, 1e-10);
 }
 
 Wrench RigidMorison::wrench(const RigidBodyMotion& m) const {
