@@ -30,21 +30,34 @@ std::pair<double, double> RigidMorison::wet_interval(const MorisonMember& mem,
   return hydro::wet_interval(above, 1e-10);
 }
 
+namespace {
+
+double section_area(const MorisonMember& mem) {
+  return 0.25 * std::numbers::pi * mem.diameter * mem.diameter;
+}
+
+// calls f(u_body, ds) at the Gauss points of the wet part [s0, s1] of a member: the
+// point in body axes and its share of the member's length
+template <class F>
+void for_each_strip(const MorisonMember& mem, const math::QuadratureRule& rule, double s0,
+                    double s1, F&& f) {
+  const Vec3 axis_b = mem.b - mem.a;
+  const double L = axis_b.norm();
+  for (std::size_t g = 0; g < rule.points.size(); ++g)
+    f(Vec3(mem.a + (s0 + (s1 - s0) * rule.points[g]) * axis_b), L * (s1 - s0) * rule.weights[g]);
+}
+
+}  // namespace
+
 Wrench RigidMorison::wrench(const RigidBodyMotion& m) const {
   Wrench W;
   const double rho = ocean_->rho();
   for (const auto& mem : members_) {
     const auto [s0, s1] = wet_interval(mem, m);
     if (s1 <= s0) continue;
-    const Vec3 axis_b = mem.b - mem.a;
-    const double L = axis_b.norm();
-    const Vec3 t = (m.R * axis_b).normalized();
-    const double area = 0.25 * std::numbers::pi * mem.diameter * mem.diameter;
-    const math::QuadratureRule& rule = rules_[&mem - members_.data()];
-    for (std::size_t g = 0; g < rule.points.size(); ++g) {
-      const double s = s0 + (s1 - s0) * rule.points[g];
-      const double ds = L * (s1 - s0) * rule.weights[g];
-      const Vec3 u_body = mem.a + s * axis_b;
+    const Vec3 t = (m.R * (mem.b - mem.a)).normalized();
+    const double area = section_area(mem);
+    for_each_strip(mem, rules_[&mem - members_.data()], s0, s1, [&](const Vec3& u_body, double ds) {
       const Vec3 x = m.point(u_body);
       const hydro::FluidPoint fl = ocean_->fluid(x, m.t);
       const Vec3 u = fl.velocity - m.point_velocity(u_body);
@@ -61,7 +74,7 @@ Wrench RigidMorison::wrench(const RigidBodyMotion& m) const {
         f -= rho * mem.ca * area * (centripetal - centripetal.dot(t) * t);
       }
       W.add_at(f * ds, x, m.r);
-    }
+    });
     if (mem.end_effects) {
       // p_d A on each wet end face, pushing along the inward normal (+t at a, -t at b)
       for (int end = 0; end < 2; ++end) {
@@ -78,26 +91,20 @@ Wrench RigidMorison::wrench(const RigidBodyMotion& m) const {
 
 Mat6 RigidMorison::added_mass(const RigidBodyMotion& m) const {
   Mat6 M = Mat6::Zero();
-  const double rho = ocean_->rho();
   for (const auto& mem : members_) {
     if (mem.ca == 0.0) continue;
     const auto [s0, s1] = wet_interval(mem, m);
     if (s1 <= s0) continue;
-    const Vec3 axis_b = mem.b - mem.a;
-    const double L = axis_b.norm();
-    const Vec3 t = (m.R * axis_b).normalized();
-    const double area = 0.25 * std::numbers::pi * mem.diameter * mem.diameter;
-    const Mat3 P = rho * mem.ca * area * (Mat3::Identity() - t * t.transpose());
-    const math::QuadratureRule& rule = rules_[&mem - members_.data()];
-    for (std::size_t g = 0; g < rule.points.size(); ++g) {
-      const double s = s0 + (s1 - s0) * rule.points[g];
-      const double ds = L * (s1 - s0) * rule.weights[g];
+    const Vec3 t = (m.R * (mem.b - mem.a)).normalized();
+    const Mat3 P =
+        ocean_->rho() * mem.ca * section_area(mem) * (Mat3::Identity() - t * t.transpose());
+    for_each_strip(mem, rules_[&mem - members_.data()], s0, s1, [&](const Vec3& u_body, double ds) {
       // a_point = a_cg - skew(arm) alpha + ...: T = [I, -skew(arm)]
       Eigen::Matrix<double, 3, 6> T;
       T.leftCols<3>().setIdentity();
-      T.rightCols<3>() = -math::skew(m.R * (mem.a + s * axis_b));
+      T.rightCols<3>() = -math::skew(m.R * u_body);
       M += ds * T.transpose() * P * T;
-    }
+    });
   }
   return M;
 }

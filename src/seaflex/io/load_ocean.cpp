@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "seaflex/forces/hull_hydrostatics.hpp"
 #include "seaflex/forces/hydro_matrices.hpp"
@@ -154,18 +155,23 @@ std::optional<Mat6> read_mat6(MapReader& r, std::string_view key, std::string_vi
   return M;
 }
 
+// cd, cd_axial, cm (default 0) and ca (default max(0, cm - 1)), for beams and members
+std::tuple<double, double, double, double> read_morison_coefficients(MapReader& r) {
+  const NumberRule rule = NumberRule::range(0.0, 10.0, "");
+  const double cd = r.number("cd", Need::kOptional, rule).value_or(0.0);
+  const double cd_axial = r.number("cd_axial", Need::kOptional, rule).value_or(0.0);
+  const double cm = r.number("cm", Need::kOptional, rule).value_or(0.0);
+  const double ca = r.number("ca", Need::kOptional, rule).value_or(std::max(0.0, cm - 1.0));
+  return {cd, cd_axial, cm, ca};
+}
+
 void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
   MorisonBeamCoefficients c;
   const double od = beam.section().outer_diameter;
   c.diameter =
       r.number("diameter", od > 0.0 ? Need::kOptional : Need::kRequired, NumberRule::positive("m"))
           .value_or(od);
-  c.cd = r.number("cd", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-  c.cd_axial =
-      r.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-  c.cm = r.number("cm", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-  c.ca = r.number("ca", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
-             .value_or(std::max(0.0, c.cm - 1.0));
+  std::tie(c.cd, c.cd_axial, c.cm, c.ca) = read_morison_coefficients(r);
   if (r.has("buoyancy"))
     c.buoyancy =
         r.choice("buoyancy", Need::kRequired, {"true", "false"}).value_or("true") == "true";
@@ -261,12 +267,7 @@ void load_members(const YAML::Node& node, const std::string& path, const RigidBo
     const auto a = read_point(m, "end_a", Need::kRequired);
     const auto b = read_point(m, "end_b", Need::kRequired);
     const auto d = m.number("diameter", Need::kRequired, NumberRule::positive("m"));
-    mem.cd = m.number("cd", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-    mem.cd_axial =
-        m.number("cd_axial", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-    mem.cm = m.number("cm", Need::kOptional, NumberRule::range(0.0, 10.0, "")).value_or(0.0);
-    mem.ca = m.number("ca", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
-                 .value_or(std::max(0.0, mem.cm - 1.0));
+    std::tie(mem.cd, mem.cd_axial, mem.cm, mem.ca) = read_morison_coefficients(m);
     mem.strips = m.integer("strips", Need::kOptional, 1, 64).value_or(10);
     if (m.has("end_effects"))
       mem.end_effects =
