@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -26,6 +27,14 @@ Simulation::Simulation(Dae& dae, ChannelList channels, Integrator& integrator,
   if (!(settings_.time_step > 0.0) || !(settings_.duration > 0.0))
     throw std::invalid_argument("Simulation: time step and duration must be positive");
   every_ = std::max(1L, std::lround(settings_.output_interval / settings_.time_step));
+  if (settings_.step_control == StepControl::kAdaptive) {
+    const double h_min =
+        settings_.min_time_step > 0.0 ? settings_.min_time_step : settings_.time_step / 1024.0;
+    if (!(h_min <= settings_.time_step))
+      throw std::invalid_argument("Simulation: min_time_step exceeds the time step");
+    levels_ = std::clamp(static_cast<int>(std::ceil(std::log2(settings_.time_step / h_min) - 1e-9)),
+                         0, 20);
+  }
   row_.resize(channels_.size());
 }
 
@@ -42,37 +51,66 @@ SimulationReport Simulation::run(State& state) {
   for (Recorder* r : recorders_) r->begin(names);
 
   const double t0 = state.t;
-  const long steps = std::lround(settings_.duration / settings_.time_step);
+  const long nominal = std::lround(settings_.duration / settings_.time_step);
+  // time in ticks of h / 2^levels: a step at level l is 2^(levels - l) ticks
+  const long per_step = 1L << levels_;
+  const long total = nominal * per_step, out_ticks = every_ * per_step;
+  const double tick = settings_.time_step / static_cast<double>(per_step);
+  const bool adaptive = settings_.step_control == StepControl::kAdaptive;
   SimulationReport report;
-  dae_.start(state);
-  record(state);
+  report.min_step = settings_.time_step;
   // state scale for the divergence test
   const double scale = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
   try {
-    for (long k = 1; k <= steps; ++k) {
-      const StepReport step = integrator_.step(dae_, state, settings_.time_step);
-      state.t = t0 + static_cast<double>(k) * settings_.time_step;  // no drift in t
-      report.steps = k;
-      report.max_constraint_violation = std::max(report.max_constraint_violation, step.residual);
-      if (!step.ok)
-        throw SolverError(fmt::format("t = {:.6g} s: {} step failed: {}", state.t,
-                                      integrator_.name(), step.message),
-                          state.t);
-      if (!state.q.allFinite() || !state.v.allFinite() ||
-          state.q.lpNorm<Eigen::Infinity>() > 1e6 * scale) {
+    dae_.start(state);
+    integrator_.start(dae_, state);
+    record(state);
+    long ticks = 0;
+    int level = 0, successes = 0;
+    while (ticks < total) {
+      const long step_ticks = per_step >> level;
+      const double h = static_cast<double>(step_ticks) * tick;
+      if (adaptive) saved_ = state;
+      const StepReport step = integrator_.step(dae_, state, h);
+      const double t_new = t0 + static_cast<double>(ticks + step_ticks) * tick;  // no drift
+      std::string failure;
+      if (!step.ok) {
+        failure = fmt::format("t = {:.6g} s: {} step failed: {}", t_new, integrator_.name(),
+                              step.message);
+      } else if (!state.q.allFinite() || !state.v.allFinite() ||
+                 state.q.lpNorm<Eigen::Infinity>() > 1e6 * scale) {
         const Index worst = worst_coordinate(state);
-        throw SolverError(
-            fmt::format("t = {:.6g} s: the solution diverged ({} at {} = {:.6g}, velocity "
-                        "{:.6g}); the time step {:.3g} s is likely above the stability limit "
-                        "of {} for this model (stiff elements, short elements) or a body is "
-                        "unconstrained",
-                        state.t, state.q.allFinite() && state.v.allFinite() ? "runaway" : "NaN/Inf",
-                        dae_.coordinate_name(worst), state.q[worst], state.v[worst],
-                        settings_.time_step, integrator_.name()),
-            state.t);
+        failure = fmt::format(
+            "t = {:.6g} s: the solution diverged ({} at {} = {:.6g}, velocity {:.6g}); the time "
+            "step {:.3g} s is likely above the stability limit of {} for this model (stiff "
+            "elements, short elements) or a body is unconstrained",
+            t_new, state.q.allFinite() && state.v.allFinite() ? "runaway" : "NaN/Inf",
+            dae_.coordinate_name(worst), state.q[worst], state.v[worst], h, integrator_.name());
       }
+      if (!failure.empty()) {
+        if (adaptive && level < levels_) {  // retry from the saved state with h / 2
+          state = saved_;
+          ++level;
+          successes = 0;
+          ++report.rejected_steps;
+          continue;
+        }
+        if (adaptive) failure += fmt::format(" (at the smallest time step, {:.3g} s)", h);
+        throw SolverError(failure, t_new);
+      }
+      state.t = t_new;
+      ticks += step_ticks;
+      ++report.steps;
+      report.iterations += step.iterations;
+      report.min_step = std::min(report.min_step, h);
+      report.max_constraint_violation = std::max(report.max_constraint_violation, step.residual);
       dae_.accept_step(state);
-      if (k % every_ == 0 || k == steps) {
+      // grow back once four steps passed and the doubled step stays on its own grid
+      if (level > 0 && ++successes >= 4 && ticks % (step_ticks * 2) == 0) {
+        --level;
+        successes = 0;
+      }
+      if (ticks % out_ticks == 0 || ticks == total) {
         record(state);
         if (progress_) progress_(state.t - t0, settings_.duration);
       }

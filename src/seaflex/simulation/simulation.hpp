@@ -1,6 +1,11 @@
-// The time loop: steps an integrator at a fixed step, feeds recorders at the output
-// interval, checks every step for NaN/Inf and divergence, and on failure flushes the
-// recorders before throwing, so results up to the failure stay on disk.
+// The time loop: steps an integrator, feeds recorders at the output interval, checks every
+// step for NaN/Inf and divergence, and on failure flushes the recorders before throwing,
+// so results up to the failure stay on disk.
+// Step control: fixed (every step h, reproducible), or adaptive: a failed step (Newton
+// failure, NaN/Inf, runaway) is retried from the saved state with h/2, down to the
+// smallest step; after four accepted steps the step doubles back towards h. Steps are
+// whole powers-of-two fractions of h counted in integer ticks, so that every output time
+// is hit exactly and t carries no round-off.
 #pragma once
 
 #include <functional>
@@ -12,17 +17,24 @@
 
 namespace seaflex {
 
+enum class StepControl { kFixed, kAdaptive };
+
 struct SimulationSettings {
   double duration = 0.0;         ///< simulated time (s), > 0
-  double time_step = 0.0;        ///< h (s), > 0
+  double time_step = 0.0;        ///< h (s), > 0; the largest step when adaptive
   double output_interval = 0.0;  ///< s; a multiple of h (0: every step)
+  StepControl step_control = StepControl::kFixed;
+  double min_time_step = 0.0;  ///< adaptive: smallest step (s); 0: h / 1024
 };
 
 struct SimulationReport {
-  long steps = 0;
+  long steps = 0;           ///< accepted steps
+  long rejected_steps = 0;  ///< failed steps retried with a smaller step (adaptive)
+  long iterations = 0;      ///< Newton iterations (or stages) of the accepted steps
   long rows = 0;
   double end_time = 0.0;
   double max_constraint_violation = 0.0;
+  double min_step = 0.0;  ///< smallest step taken (s)
 };
 
 /// Called every output row: (t, duration).
@@ -52,6 +64,8 @@ class Simulation {
   std::vector<Recorder*> recorders_;
   SimulationProgress progress_;
   long every_ = 1;
+  int levels_ = 0;  // adaptive: the step may be halved this many times
+  State saved_;     // the state before the step, for a retry
   std::vector<double> row_;
   long rows_ = 0;
 };

@@ -23,6 +23,8 @@ struct DaeRequest {
   double load_factor = 1.0;  ///< scales external loads (static load stepping)
   /// adds kq * d(C_q^T lambda)/dq (state.lambda) to the top-left block (Newton methods)
   bool multiplier_hessian = false;
+  /// C_q^T lambda (state.lambda) into DaeEval::CqT_lambda (residuals of implicit methods)
+  bool reaction_forces = false;
 };
 
 /// Results and workspace of evaluations; allocated once by Dae::make_eval().
@@ -32,6 +34,7 @@ struct DaeEval {
   VecX C;
   VecX Cdot;
   VecX gamma;
+  VecX CqT_lambda;  ///< C_q^T lambda, when DaeRequest::reaction_forces
   math::SparseBlockAssembler kkt;
   std::vector<ConstraintEval> constraint_buffers;
   std::vector<MatX> hessian_buffers;
@@ -47,6 +50,9 @@ class Dae {
   /// True when M is constant and C_q is constant, so the KKT matrix with km = 1,
   /// kq = kv = 0 never changes.
   virtual bool constant_mass_kkt() const = 0;
+  /// True when M does not depend on the state (constraints may be nonlinear); false is
+  /// always safe.
+  virtual bool constant_mass() const { return false; }
   /// Names for messages: "beam.n3.r'.z", "support beam.n0: x".
   virtual std::string coordinate_name(Index i) const = 0;
   virtual std::string constraint_name(Index row) const = 0;

@@ -78,6 +78,7 @@ DaeEval System::make_eval() const {
   e.C = VecX::Zero(m_);
   e.Cdot = VecX::Zero(m_);
   e.gamma = VecX::Zero(m_);
+  e.CqT_lambda = VecX::Zero(n_);
   e.kkt = pattern_;
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Index rows = constraints_[k]->num_rows();
@@ -104,7 +105,8 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
     for (const auto& b : bodies_) b->assemble(state, target);
     for (const auto& f : forces_) f->assemble(state, request.load_factor, target);
   }
-  if (!request.constraints && !request.matrix) return;
+  if (!request.constraints && !request.matrix && !request.reaction_forces) return;
+  if (request.reaction_forces) out.CqT_lambda.setZero();
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = *constraints_[k];
     ConstraintEval& ce = out.constraint_buffers[k];
@@ -121,6 +123,10 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
         out.Cdot[r0 + r] = cdot;
       }
     }
+    if (request.reaction_forces)
+      for (std::size_t i = 0; i < dofs.size(); ++i)
+        for (Index r = 0; r < c.num_rows(); ++r)
+          out.CqT_lambda[dofs[i]] += ce.Cq(r, i) * state.lambda[r0 + r];
     if (request.matrix) {
       out.kkt.add(cq_block_[k], ce.Cq);
       out.kkt.add_transposed(cqt_block_[k], ce.Cq);
@@ -134,11 +140,16 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
   }
 }
 
-bool System::constant_mass_kkt() const {
+bool System::constant_mass() const {
   for (const auto& b : bodies_)
     if (!b->constant_mass()) return false;
   for (const auto& f : forces_)
     if (!f->constant_mass()) return false;
+  return true;
+}
+
+bool System::constant_mass_kkt() const {
+  if (!constant_mass()) return false;
   for (const auto& c : constraints_)
     if (!c->is_linear()) return false;
   return true;

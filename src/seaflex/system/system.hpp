@@ -52,6 +52,7 @@ class System : public Dae {
   DaeEval make_eval() const override;
   void evaluate(const State& state, const DaeRequest& request, DaeEval& out) const override;
   bool constant_mass_kkt() const override;
+  bool constant_mass() const override;
   std::string coordinate_name(Index i) const override;
   std::string constraint_name(Index row) const override;
   double step_scale(const State& state, const VecX& dq) const override;

@@ -1,0 +1,251 @@
+#include "seaflex/integrators/generalized_alpha.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "seaflex/core/errors.hpp"
+
+namespace seaflex {
+
+namespace {
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+}  // namespace
+
+GeneralizedAlphaSettings GeneralizedAlphaSettings::from_rho_inf(double rho) {
+  if (!(rho >= 0.0 && rho <= 1.0))
+    throw std::invalid_argument("generalized-alpha: rho_inf must lie in [0, 1]");
+  GeneralizedAlphaSettings s;
+  // Chung & Hulbert (1993) eq. (25), (17), (20), as in Arnold & Bruls (2007) sec. 2
+  s.alpha_m = (2.0 * rho - 1.0) / (rho + 1.0);
+  s.alpha_f = rho / (rho + 1.0);
+  s.gamma = 0.5 + s.alpha_f - s.alpha_m;
+  s.beta = 0.25 * (s.gamma + 0.5) * (s.gamma + 0.5);
+  return s;
+}
+
+GeneralizedAlphaSettings GeneralizedAlphaSettings::hht(double rho) {
+  if (!(rho >= 0.5 && rho <= 1.0))
+    throw std::invalid_argument("HHT-alpha: rho_inf must lie in [1/2, 1]");
+  GeneralizedAlphaSettings s;
+  // Hilber, Hughes & Taylor (1977): alpha in [0, 1/3], rho_inf = (1 - alpha)/(1 + alpha)
+  s.alpha_m = 0.0;
+  s.alpha_f = (1.0 - rho) / (1.0 + rho);
+  s.gamma = 0.5 + s.alpha_f;
+  s.beta = 0.25 * (1.0 + s.alpha_f) * (1.0 + s.alpha_f);
+  return s;
+}
+
+GeneralizedAlpha::GeneralizedAlpha(GeneralizedAlphaSettings settings) : s_(settings) {
+  if (!(s_.alpha_m < 1.0 && s_.alpha_f < 1.0 && s_.beta > 0.0 && s_.gamma > 0.0))
+    throw std::invalid_argument("generalized-alpha: need alpha_m, alpha_f < 1 and beta, gamma > 0");
+  if (s_.max_iterations < 1 || !(s_.tolerance > 0.0))
+    throw std::invalid_argument("generalized-alpha: need max_iterations >= 1, tolerance > 0");
+}
+
+void GeneralizedAlpha::prepare(const Dae& dae) {
+  n_ = dae.num_coordinates();
+  m_ = dae.num_constraints();
+  eval_ = dae.make_eval();
+  constant_mass_ = dae.constant_mass();
+  if (!constant_mass_) mass_eval_ = dae.make_eval();
+  for (VecX* x : {&a_n_, &abar_n_, &a_, &abar_, &Ma_}) *x = VecX::Zero(n_);
+  rhs_ = VecX::Zero(n_ + m_);
+  sol_ = VecX::Zero(n_ + m_);
+  prepared_ = true;
+}
+
+void GeneralizedAlpha::evaluate(const Dae& dae, const State& state, const DaeRequest& request,
+                                DaeEval& eval) {
+  const auto t0 = Clock::now();
+  dae.evaluate(state, request, eval);
+  ++stats_.evaluations;
+  stats_.assembly_s += since(t0);
+}
+
+bool GeneralizedAlpha::factorize(const SpMat& A) {
+  const auto t0 = Clock::now();
+  const bool ok = newton_solver_.factorize(A);
+  ++stats_.factorizations;
+  stats_.factorize_s += since(t0);
+  return ok;
+}
+
+void GeneralizedAlpha::solve(const VecX& b, VecX& x) {
+  const auto t0 = Clock::now();
+  newton_solver_.solve(b, x);
+  ++stats_.solves;
+  stats_.solve_s += since(t0);
+}
+
+void GeneralizedAlpha::start(const Dae& dae, State& state) {
+  if (!prepared_) prepare(dae);
+  q_scale_ = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+  // consistent initial accelerations and multipliers (thesis eq. 132-133):
+  // [M C_q^T; C_q 0] [a; lambda] = [Q; gamma]
+  DaeRequest req;
+  req.matrix = true;
+  req.scales.km = 1.0;
+  evaluate(dae, state, req, eval_);
+  if (constant_mass_) mass_ = eval_.kkt.matrix().topLeftCorner(n_, n_);
+  if (!initial_solver_.factorize(eval_.kkt.matrix()))
+    throw SolverError(fmt::format("generalized-alpha: the augmented matrix [M C_q^T; C_q 0] is "
+                                  "singular at the start ({}): a body without mass or redundant "
+                                  "constraints",
+                                  initial_solver_.message()),
+                      state.t);
+  rhs_.head(n_) = eval_.Q;
+  rhs_.tail(m_) = eval_.gamma;
+  initial_solver_.solve(rhs_, sol_);
+  if (!sol_.allFinite())
+    throw SolverError("generalized-alpha: the initial accelerations are not finite", state.t);
+  a_n_ = sol_.head(n_);
+  abar_n_ = a_n_;  // Arnold & Bruls (2007) eq. (10): abar_0 = a_0
+  state.lambda = sol_.tail(m_);
+  factored_h_ = 0.0;
+  started_ = true;
+}
+
+void GeneralizedAlpha::update_multipliers(const Dae& dae, State& state) {
+  if (!started_) start(dae, state);
+}
+
+void GeneralizedAlpha::update_iterate(const State& state_n, double h) {
+  const double am = s_.alpha_m, af = s_.alpha_f;
+  // Arnold & Bruls (2007) eq. (7)-(9)
+  abar_ = ((1.0 - af) * a_ + af * a_n_ - am * abar_n_) / (1.0 - am);
+  trial_.q =
+      state_n.q + h * state_n.v + (h * h * (0.5 - s_.beta)) * abar_n_ + (h * h * s_.beta) * abar_;
+  trial_.v = state_n.v + (h * (1.0 - s_.gamma)) * abar_n_ + (h * s_.gamma) * abar_;
+}
+
+void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX& a, VecX& out) {
+  const SpMat* M = &mass_;
+  if (!constant_mass_) {
+    DaeRequest req;
+    req.forces = false;
+    req.constraints = false;
+    req.matrix = true;
+    req.scales.km = 1.0;
+    evaluate(dae, state, req, mass_eval_);
+    M = &mass_eval_.kkt.matrix();
+  }
+  // out = M a over the top-left n x n block, without a temporary
+  out.setZero();
+  for (Index j = 0; j < n_; ++j)
+    for (SpMat::InnerIterator it(*M, j); it; ++it)
+      if (it.row() < n_) out[it.row()] += it.value() * a[j];
+}
+
+StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
+  if (!started_) start(dae, state);
+  ++stats_.steps;
+  StepReport report;
+  const double bp = (1.0 - s_.alpha_m) / (s_.beta * h * h * (1.0 - s_.alpha_f));  // beta'
+  const double gp = s_.gamma / (s_.beta * h);                                     // gamma'
+  const double tol = s_.tolerance * q_scale_;
+  trial_ = state;
+  trial_.t = state.t + h;
+  a_ = a_n_;  // predictor: constant acceleration
+  bool want_fresh = s_.newton == NewtonMode::kFull || factored_h_ != h;
+  double previous = 0.0;  // |dq| of the previous update
+  int diverging = 0;      // consecutive growing updates with a fresh Jacobian
+  auto fail = [&](std::string message) {
+    report.ok = false;
+    report.message = std::move(message);
+    return report;
+  };
+  for (int it = 1;; ++it) {
+    if (it > s_.max_iterations)
+      return fail(
+          fmt::format("Newton did not converge in {} iterations (step {:g} s; last "
+                      "update {:.3g} m against a tolerance of {:.3g} m)",
+                      s_.max_iterations, h, previous, tol));
+    ++report.iterations;
+    ++stats_.iterations;
+    update_iterate(state, h);
+    DaeRequest req;
+    req.reaction_forces = m_ > 0;
+    const bool refresh = want_fresh || !newton_solver_.factorized();
+    if (refresh) {
+      req.matrix = true;
+      req.scales = MatrixScales{1.0, 1.0 / bp, gp / bp};
+      req.multiplier_hessian = true;
+    }
+    try {
+      evaluate(dae, trial_, req, eval_);
+      mass_times(dae, trial_, a_, Ma_);
+    } catch (const SolverError& e) {  // an element cannot be evaluated at this iterate
+      return fail(e.what());
+    }
+    if (refresh) {
+      if (!factorize(eval_.kkt.matrix()))
+        return fail(
+            fmt::format("the Newton matrix is singular ({}): a mechanism, a body "
+                        "without mass or supports, or redundant constraints",
+                        newton_solver_.message()));
+      factored_h_ = h;
+      want_fresh = s_.newton == NewtonMode::kFull;
+    }
+    // -[r / beta'; C], r = M a + C_q^T lambda - Q
+    rhs_.head(n_) = (eval_.Q - Ma_) / bp;
+    if (m_ > 0) {
+      rhs_.head(n_) -= eval_.CqT_lambda / bp;
+      rhs_.tail(m_) = -eval_.C;
+    }
+    solve(rhs_, sol_);
+    if (!sol_.allFinite())
+      return fail(
+          "the Newton update is not finite: NaN/Inf in the forces, or a nearly singular "
+          "Newton matrix");
+    a_ += bp * sol_.head(n_);
+    trial_.lambda += bp * sol_.tail(m_);
+    const double norm = sol_.head(n_).lpNorm<Eigen::Infinity>();
+    // convergence (Hairer & Wanner, Solving ODEs II, sec. IV.8): the error left after an
+    // update dq is about theta/(1 - theta) |dq| with the contraction rate theta; on the
+    // first update of a matrix, |dq| itself
+    // (an update at round-off level of q also ends the iterations: nothing is left to gain)
+    bool converged = norm <= std::max(tol, 16.0 * kEps * trial_.q.lpNorm<Eigen::Infinity>());
+    if (previous > 0.0) {
+      const double theta = norm / previous;
+      if (theta < 1.0 && theta / (1.0 - theta) * norm <= tol) converged = true;
+      // modified Newton: a Jacobian at this iterate when the contraction is slow, or too
+      // slow to reach the tolerance within the remaining iterations
+      const bool too_slow =
+          theta >= 1.0 || std::pow(theta, s_.max_iterations - it) / (1.0 - theta) * norm > tol;
+      if (!converged && (theta > 0.5 || too_slow) && !refresh) want_fresh = true;
+      diverging = !converged && refresh && theta >= 1.0 ? diverging + 1 : 0;
+      if (diverging >= 2)
+        return fail(
+            fmt::format("Newton diverges (updates grow by {:.3g} with a fresh "
+                        "Jacobian; step {:g} s)",
+                        theta, h));
+    }
+    if (converged) break;
+    previous = norm;
+  }
+  update_iterate(state, h);
+  // the constraints at the accepted positions (cheap: no forces, no matrix)
+  if (m_ > 0) {
+    DaeRequest req;
+    req.forces = false;
+    evaluate(dae, trial_, req, eval_);
+    report.residual = eval_.C.lpNorm<Eigen::Infinity>();
+  }
+  state.t = trial_.t;
+  state.q = trial_.q;
+  state.v = trial_.v;
+  state.lambda = trial_.lambda;
+  a_n_ = a_;
+  abar_n_ = abar_;
+  return report;
+}
+
+}  // namespace seaflex
