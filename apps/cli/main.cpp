@@ -149,6 +149,13 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   return state;
 }
 
+SimulationSettings simulation_settings(const io::DynamicsSettings& d) {
+  SimulationSettings s{d.duration, d.time_step, d.output_interval};
+  s.step_control = d.adaptive ? StepControl::kAdaptive : StepControl::kFixed;
+  s.min_time_step = d.min_time_step;
+  return s;
+}
+
 int cmd_check(const std::string& file) {
   const io::Model model = load_model(file);
   print_summary(model);
@@ -175,8 +182,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
   State state =
       d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
   auto integrator = d.make_integrator();
-  Simulation sim(*model.system, io::model_channels(model), *integrator,
-                 SimulationSettings{d.duration, d.time_step, d.output_interval});
+  Simulation sim(*model.system, io::model_channels(model), *integrator, simulation_settings(d));
   io::CsvRecorder csv(dir / "timeseries.csv");
   sim.add_recorder(csv);
   ProgressLine progress(quiet);
@@ -184,11 +190,20 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
   try {
     const SimulationReport rep = sim.run(state);
     progress.done();
-    fmt::print(
-        "dynamics: {} steps of {:g} s to t = {:g} s in {:.2f} s wall time; {} rows; max constraint "
-        "violation {:.2e}\nwrote {}\n",
-        rep.steps, d.time_step, rep.end_time, progress.elapsed(), rep.rows,
-        rep.max_constraint_violation, (dir / "timeseries.csv").string());
+    if (rep.rejected_steps > 0 || rep.min_step < d.time_step)
+      fmt::print(
+          "dynamics: {} steps ({} rejected and retried, smallest {:g} s) to t = {:g} s in "
+          "{:.2f} s wall time; {} Newton iterations; {} rows; max constraint violation "
+          "{:.2e}\n",
+          rep.steps, rep.rejected_steps, rep.min_step, rep.end_time, progress.elapsed(),
+          rep.iterations, rep.rows, rep.max_constraint_violation);
+    else
+      fmt::print(
+          "dynamics: {} steps of {:g} s to t = {:g} s in {:.2f} s wall time; {} rows; max "
+          "constraint violation {:.2e}\n",
+          rep.steps, d.time_step, rep.end_time, progress.elapsed(), rep.rows,
+          rep.max_constraint_violation);
+    fmt::print("wrote {}\n", (dir / "timeseries.csv").string());
   } catch (const SolverError&) {
     progress.done();
     std::fprintf(stderr, "seaflex: results up to the failure are in %s\n",
@@ -217,6 +232,54 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
   }
   std::fclose(out);
   fmt::print("wrote {}\n", (dir / "modes.csv").string());
+  return 0;
+}
+
+// Times a model's dynamics without writing results: statics (when the model starts from
+// it), then the simulation; prints the speed against real time and where the time goes.
+int cmd_bench(const std::string& file, double duration) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds_since = [](Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  };
+  const io::Model model = load_model(file);
+  if (!model.dynamics)
+    throw InputError({Diagnostic{
+        file, 0, 0, "dynamics", "'seaflex bench' needs a dynamics section (time_step, duration)"}});
+  io::DynamicsSettings d = *model.dynamics;
+  if (duration > 0.0)
+    d.duration = std::max(d.time_step, std::round(duration / d.time_step) * d.time_step);
+  fmt::print("model: {} ({} coordinates, {} constraint rows)\n", file,
+             model.system->num_coordinates(), model.system->num_constraints());
+  State state = model.system->initial_state();
+  if (d.start_from_statics) {
+    const auto t0 = Clock::now();
+    const StaticsReport rep = solve_statics(*model.system, state, model.statics);
+    fmt::print("statics: {} Newton iterations in {} increment(s), {:.3f} s wall\n", rep.iterations,
+               rep.increments, seconds_since(t0));
+  }
+  auto integrator = d.make_integrator();
+  Simulation sim(*model.system, io::model_channels(model), *integrator, simulation_settings(d));
+  const auto t0 = Clock::now();
+  const SimulationReport rep = sim.run(state);
+  const double wall = seconds_since(t0);
+  const IntegratorStats& st = integrator->stats();
+  const double other = wall - st.assembly_s - st.factorize_s - st.solve_s;
+  fmt::print(
+      "dynamics: {}, {:g} s simulated in {:.3f} s wall: {:.4g} s wall per simulated s, "
+      "{:.4g} x real time\n",
+      integrator->name(), d.duration, wall, wall / d.duration, d.duration / wall);
+  fmt::print(
+      "steps: {} accepted, {} rejected, smallest {:g} s; {:.3g} Newton iterations per step\n",
+      rep.steps, rep.rejected_steps, rep.min_step,
+      static_cast<double>(rep.iterations) / std::max(1L, rep.steps));
+  fmt::print("work: {} evaluations, {} factorizations, {} solves\n", st.evaluations,
+             st.factorizations, st.solves);
+  fmt::print(
+      "wall time: assembly {:.3f} s ({:.0f} %), factorization {:.3f} s ({:.0f} %), solve "
+      "{:.3f} s ({:.0f} %), other {:.3f} s ({:.0f} %)\n",
+      st.assembly_s, 100 * st.assembly_s / wall, st.factorize_s, 100 * st.factorize_s / wall,
+      st.solve_s, 100 * st.solve_s / wall, other, 100 * other / wall);
   return 0;
 }
 
@@ -252,6 +315,13 @@ int main(int argc, char** argv) {
                   "linearize about the initial state instead of statics");
   modes->add_flag("-q,--quiet", quiet, "no progress messages");
 
+  double bench_duration = 0.0;
+  auto* bench = app.add_subcommand(
+      "bench", "time a model's dynamics (no output files): speed and the split of the work");
+  bench->add_option("MODEL", file, "model file (YAML)")->required();
+  bench->add_option("--duration", bench_duration,
+                    "simulated time (s) instead of the model's duration");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -263,6 +333,7 @@ int main(int argc, char** argv) {
     if (*statics) return cmd_statics(file, dir, quiet);
     if (*run) return cmd_run(file, dir, quiet);
     if (*modes) return cmd_modes(file, dir, count, about_initial, quiet);
+    if (*bench) return cmd_bench(file, bench_duration);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitInput;

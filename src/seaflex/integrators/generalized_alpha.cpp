@@ -126,9 +126,12 @@ void GeneralizedAlpha::update_iterate(const State& state_n, double h) {
   trial_.v = state_n.v + (h * (1.0 - s_.gamma)) * abar_n_ + (h * s_.gamma) * abar_;
 }
 
-void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX& a, VecX& out) {
+void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX& a, bool in_eval,
+                                  VecX& out) {
   const SpMat* M = &mass_;
-  if (!constant_mass_) {
+  if (!constant_mass_ && in_eval) {
+    M = &eval_.kkt.matrix();  // assembled with the forces (km = 1, kq = kv = 0)
+  } else if (!constant_mass_) {
     DaeRequest req;
     req.forces = false;
     req.constraints = false;
@@ -178,10 +181,13 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       req.matrix = true;
       req.scales = MatrixScales{1.0, 1.0 / bp, gp / bp};
       req.multiplier_hessian = true;
+    } else if (!constant_mass_) {  // M(q) in the same pass as the forces
+      req.matrix = true;
+      req.scales = MatrixScales{1.0, 0.0, 0.0};
     }
     try {
       evaluate(dae, trial_, req, eval_);
-      mass_times(dae, trial_, a_, Ma_);
+      mass_times(dae, trial_, a_, !refresh, Ma_);
     } catch (const SolverError& e) {  // an element cannot be evaluated at this iterate
       return fail(e.what());
     }

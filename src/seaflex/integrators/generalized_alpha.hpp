@@ -71,8 +71,9 @@ class GeneralizedAlpha : public Integrator {
   void solve(const VecX& b, VecX& x);
   // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n
   void update_iterate(const State& state_n, double h);
-  // M a (from the stored constant mass matrix or a mass-only evaluation)
-  void mass_times(const Dae& dae, const State& state, const VecX& a, VecX& out);
+  // M a: from the stored constant mass matrix, from eval_ (in_eval: assembled with km = 1
+  // alone in the same pass as the forces), or from a mass-only evaluation
+  void mass_times(const Dae& dae, const State& state, const VecX& a, bool in_eval, VecX& out);
   bool refactor(const Dae& dae, const State& trial, double h);
 
   GeneralizedAlphaSettings s_;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "seaflex/integrators/generalized_alpha.hpp"
 #include "seaflex/integrators/rk4_augmented.hpp"
 #include "seaflex/io/load_context.hpp"
 
@@ -10,7 +11,9 @@ namespace seaflex::io {
 
 namespace {
 
-std::function<std::unique_ptr<Integrator>()> build_rk4(MapReader& r, LoadContext&) {
+using IntegratorFactory = std::function<std::unique_ptr<Integrator>()>;
+
+IntegratorFactory build_rk4(MapReader& r, LoadContext&) {
   const auto stab =
       r.choice("constraint_stabilization", Need::kOptional, {"projection", "baumgarte", "none"});
   const auto alpha = r.number("baumgarte_alpha", Need::kOptional, NumberRule::positive("1/s"));
@@ -25,6 +28,29 @@ std::function<std::unique_ptr<Integrator>()> build_rk4(MapReader& r, LoadContext
   return [s, a, b]() { return std::make_unique<Rk4Augmented>(s, a, b); };
 }
 
+// generalized_alpha and hht: spectral radius, Newton mode and tolerance
+IntegratorFactory build_alpha(MapReader& r, bool hht) {
+  const double low = hht ? 0.5 : 0.0;
+  const auto rho = r.number("rho_inf", Need::kOptional, NumberRule::range(low, 1.0, ""));
+  const auto newton = r.choice("newton", Need::kOptional, {"modified", "full"});
+  const auto iterations = r.integer("max_iterations", Need::kOptional, 1, 1000);
+  const auto tol = r.number("tolerance", Need::kOptional, NumberRule::range(1e-15, 1e-2, ""));
+  const double rho_inf = rho.value_or(hht ? 0.9 : 0.8);
+  GeneralizedAlphaSettings s = hht ? GeneralizedAlphaSettings::hht(rho_inf)
+                                   : GeneralizedAlphaSettings::from_rho_inf(rho_inf);
+  s.newton = newton == "full" ? NewtonMode::kFull : NewtonMode::kModified;
+  if (iterations) s.max_iterations = *iterations;
+  if (tol) s.tolerance = *tol;
+  return [s]() { return std::make_unique<GeneralizedAlpha>(s); };
+}
+
+IntegratorFactory build_generalized_alpha(MapReader& r, LoadContext&) {
+  return build_alpha(r, false);
+}
+IntegratorFactory build_hht(MapReader& r, LoadContext&) {
+  return build_alpha(r, true);
+}
+
 // true when x is a whole multiple of h (to 1e-6 of a step)
 bool whole_steps(double x, double h) {
   const double n = x / h;
@@ -36,6 +62,8 @@ bool whole_steps(double x, double h) {
 const std::map<std::string, IntegratorBuilder>& integrator_builders() {
   static const std::map<std::string, IntegratorBuilder> builders{
       {"rk4", build_rk4},
+      {"generalized_alpha", build_generalized_alpha},
+      {"hht", build_hht},
   };
   return builders;
 }
@@ -70,6 +98,18 @@ void load_dynamics(const YAML::Node& node, LoadContext& ctx) {
   const auto out = r.number("output_interval", Need::kOptional, NumberRule::positive("s"));
   const auto start = r.choice("initial_state", Need::kOptional, {"model", "statics"});
   d.start_from_statics = start == "statics";
+  const auto control = r.choice("step_control", Need::kOptional, {"fixed", "adaptive"});
+  d.adaptive = control == "adaptive";
+  const auto h_min = r.number("min_time_step", Need::kOptional, NumberRule::positive("s"));
+  if (h_min && !d.adaptive) r.error("min_time_step", "applies only with step_control: adaptive");
+  if (h_min && h && *h_min > *h)
+    r.error("min_time_step",
+            fmt::format("must not exceed time_step ({:g} s), got {:g} s", *h, *h_min));
+  if (h_min && h && *h / *h_min > 1048576.0)
+    r.error("min_time_step", fmt::format("at most 2^20 halvings of time_step ({:g} s) are "
+                                         "allowed; got {:g} s",
+                                         *h, *h_min));
+  d.min_time_step = h_min.value_or(0.0);
   bool ok = h && T;
   if (h && T) {
     if (*T / *h > 2e9) {
