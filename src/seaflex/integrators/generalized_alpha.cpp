@@ -156,10 +156,15 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   const double tol = s_.tolerance * q_scale_;
   trial_ = state;
   trial_.t = state.t + h;
-  a_ = a_n_;  // predictor: constant acceleration
+  // predictor: a_{n+1} = 0 (Arnold & Bruls 2007, sec. 3); a_{n+1} = a_n would extrapolate the
+  // alternating accelerations of high modes that the scheme damps (a_{n+1} ~ -rho a_n)
+  a_.setZero();
   bool want_fresh = s_.newton == NewtonMode::kFull || factored_h_ != h;
-  double previous = 0.0;  // |dq| of the previous update
-  int diverging = 0;      // consecutive growing updates with a fresh Jacobian
+  double previous = 0.0;       // |dq| of the previous update
+  double last_theta = 0.0;     // the previous contraction rate (0: none yet)
+  double first_norm = -1.0;    // |dq| of the step's first update
+  bool fresh_in_step = false;  // the matrix was factored during this step
+  int diverging = 0;           // consecutive growing updates with a fresh Jacobian
   auto fail = [&](std::string message) {
     report.ok = false;
     report.message = std::move(message);
@@ -215,18 +220,35 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     trial_.lambda += bp * sol_.tail(m_);
     const double norm = sol_.head(n_).lpNorm<Eigen::Infinity>();
     // convergence (Hairer & Wanner, Solving ODEs II, sec. IV.8): the error left after an
-    // update dq is about theta/(1 - theta) |dq| with the contraction rate theta; on the
-    // first update of a matrix, |dq| itself
-    // (an update at round-off level of q also ends the iterations: nothing is left to gain)
-    bool converged = norm <= std::max(tol, 16.0 * kEps * trial_.q.lpNorm<Eigen::Infinity>());
+    // update dq is about theta/(1 - theta) |dq| with the contraction rate theta. A matrix
+    // from an earlier step contracts unevenly (the first update removes the predictor's
+    // error, later ones the matrix's), so then theta is the larger of the last two rates.
+    // An update at round-off level (1e3 eps of the step's first update, or 16 eps of q)
+    // also ends the iterations: nothing is left to gain.
+    if (refresh) fresh_in_step = true;
+    if (first_norm < 0.0) first_norm = norm;
+    const double floor =
+        std::max(1e3 * kEps * first_norm, 16.0 * kEps * trial_.q.lpNorm<Eigen::Infinity>());
+    bool converged = norm <= std::max(tol, floor);
     if (previous > 0.0) {
       const double theta = norm / previous;
-      if (theta < 1.0 && theta / (1.0 - theta) * norm <= tol) converged = true;
+      const double rate =
+          fresh_in_step ? theta : (last_theta > 0.0 ? std::max(theta, last_theta) : 1.0);
+      if (rate < 1.0 && rate / (1.0 - rate) * norm <= tol) converged = true;
+      last_theta = theta;
       // modified Newton: a Jacobian at this iterate when the contraction is slow, or too
       // slow to reach the tolerance within the remaining iterations
       const bool too_slow =
           theta >= 1.0 || std::pow(theta, s_.max_iterations - it) / (1.0 - theta) * norm > tol;
-      if (!converged && (theta > 0.5 || too_slow) && !refresh) want_fresh = true;
+      if (!converged && (theta > 0.5 || too_slow) && !refresh) {
+        want_fresh = true;   // a Jacobian at this iterate, or, when the stale matrix has
+        if (theta >= 1.0) {  // driven the iterate away, at the predictor again
+          a_.setZero();
+          trial_.lambda = state.lambda;
+          previous = last_theta = 0.0;
+          continue;
+        }
+      }
       diverging = !converged && refresh && theta >= 1.0 ? diverging + 1 : 0;
       if (diverging >= 2)
         return fail(
