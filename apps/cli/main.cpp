@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/parallel.hpp"
 #include "seaflex/io/csv_recorder.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/simulation/simulation.hpp"
@@ -190,18 +191,20 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
   try {
     const SimulationReport rep = sim.run(state);
     progress.done();
+    const std::string thread_note =
+        fmt::format("{} thread{}", threads(), threads() == 1 ? "" : "s");
     if (rep.rejected_steps > 0 || rep.min_step < d.time_step)
       fmt::print(
           "dynamics: {} steps ({} rejected and retried, smallest {:g} s) to t = {:g} s in "
-          "{:.2f} s wall time; {} Newton iterations; {} rows; max constraint violation "
+          "{:.2f} s wall time ({}); {} Newton iterations; {} rows; max constraint violation "
           "{:.2e}\n",
           rep.steps, rep.rejected_steps, rep.min_step, rep.end_time, progress.elapsed(),
-          rep.iterations, rep.rows, rep.max_constraint_violation);
+          thread_note, rep.iterations, rep.rows, rep.max_constraint_violation);
     else
       fmt::print(
-          "dynamics: {} steps of {:g} s to t = {:g} s in {:.2f} s wall time; {} rows; max "
+          "dynamics: {} steps of {:g} s to t = {:g} s in {:.2f} s wall time ({}); {} rows; max "
           "constraint violation {:.2e}\n",
-          rep.steps, d.time_step, rep.end_time, progress.elapsed(), rep.rows,
+          rep.steps, d.time_step, rep.end_time, progress.elapsed(), thread_note, rep.rows,
           rep.max_constraint_violation);
     fmt::print("wrote {}\n", (dir / "timeseries.csv").string());
   } catch (const SolverError&) {
@@ -293,6 +296,13 @@ int main(int argc, char** argv) {
   bool quiet = false;
   int count = 10;
   bool about_initial = false;
+  int threads = 0;  // 0: not given, keep seaflex::threads()'s default
+  const auto add_threads = [&](CLI::App* cmd) {
+    cmd->add_option("--threads", threads,
+                    "threads of the element loops (default: OMP_NUM_THREADS if set, else 1); "
+                    "results are identical for any count")
+        ->check(CLI::PositiveNumber);
+  };
 
   auto* check = app.add_subcommand("check", "validate a model and print a summary");
   check->add_option("MODEL", file, "model file (YAML)")->required();
@@ -300,10 +310,12 @@ int main(int argc, char** argv) {
   statics->add_option("MODEL", file, "model file (YAML)")->required();
   statics->add_option("-o,--output", dir, "output directory")->capture_default_str();
   statics->add_flag("-q,--quiet", quiet, "no progress messages");
+  add_threads(statics);
   auto* run = app.add_subcommand("run", "dynamic simulation; writes DIR/timeseries.csv");
   run->add_option("MODEL", file, "model file (YAML)")->required();
   run->add_option("-o,--output", dir, "output directory")->capture_default_str();
   run->add_flag("-q,--quiet", quiet, "no progress line");
+  add_threads(run);
   auto* modes = app.add_subcommand(
       "modes", "natural frequencies about static equilibrium; writes DIR/modes.csv");
   modes->add_option("MODEL", file, "model file (YAML)")->required();
@@ -314,13 +326,17 @@ int main(int argc, char** argv) {
   modes->add_flag("--about-initial", about_initial,
                   "linearize about the initial state instead of statics");
   modes->add_flag("-q,--quiet", quiet, "no progress messages");
+  add_threads(modes);
 
   double bench_duration = 0.0;
   auto* bench = app.add_subcommand(
       "bench", "time a model's dynamics (no output files): speed and the split of the work");
   bench->add_option("MODEL", file, "model file (YAML)")->required();
-  bench->add_option("--duration", bench_duration,
-                    "simulated time (s) instead of the model's duration");
+  bench
+      ->add_option("--duration", bench_duration,
+                   "simulated time (s) instead of the model's duration")
+      ->check(CLI::PositiveNumber);
+  add_threads(bench);
 
   try {
     app.parse(argc, argv);
@@ -329,6 +345,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitInput;
   }
   try {
+    if (threads > 0) set_threads(threads);
     if (*check) return cmd_check(file);
     if (*statics) return cmd_statics(file, dir, quiet);
     if (*run) return cmd_run(file, dir, quiet);

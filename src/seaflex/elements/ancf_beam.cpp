@@ -82,6 +82,10 @@ AncfBeam::AncfBeam(std::string name, BeamGeometry geometry, BeamSection section,
     }
     kernel_of_.push_back(found);
   }
+  // elements k and k + 1 share node k + 1: even and odd elements share nothing
+  std::vector<int> color(element_lengths_.size());
+  for (std::size_t el = 0; el < color.size(); ++el) color[el] = static_cast<int>(el % 2);
+  coloring_ = ElementColoring(color);
 }
 
 void AncfBeam::write_initial_state(VecX& q, VecX& v) const {
@@ -104,7 +108,8 @@ void AncfBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
 void AncfBeam::assemble(const State& state, AssemblyTarget& target) const {
   const MatrixScales& k = target.scales;
   const bool want_K = target.matrix && k.kq != 0.0;
-  for (int el = 0; el < num_elements(); ++el) {
+  // even, then odd elements; in parallel within each (core/parallel.hpp)
+  for_each_colored(coloring_, [&](int el) {
     const Vec12 e = element_coordinates(state.q, el);
     Vec12 Q = Vec12::Zero();
     Mat12 K;  // zeroed only when the tangent is asked for (RK4 stages need forces only)
@@ -117,7 +122,7 @@ void AncfBeam::assemble(const State& state, AssemblyTarget& target) const {
       if (want_K) H += k.kq * K;
       target.matrix->add(blocks_[el], H);
     }
-  }
+  });
 }
 
 void AncfBeam::add_gravity(const Vec3& g, const State&, AssemblyTarget& target) const {

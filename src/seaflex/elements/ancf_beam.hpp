@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "seaflex/core/parallel.hpp"
 #include "seaflex/elements/ancf_cable.hpp"
 #include "seaflex/elements/ancf_cable_elastic.hpp"
 #include "seaflex/model/body.hpp"
@@ -92,6 +93,9 @@ class AncfBeam : public Body {
 
   /// Element and local xi of the reference arc length s in [0, length()].
   std::pair<int, double> locate(double s) const;
+  /// Even and odd elements: no two elements of one color share a node. Element loops
+  /// over the beam (its own, Morison loads) run color by color (core/parallel.hpp).
+  const ElementColoring& coloring() const { return coloring_; }
 
  private:
   BeamGeometry geometry_;
@@ -104,6 +108,7 @@ class AncfBeam : public Body {
   std::vector<ancf_cable::Mat12> masses_;             // per distinct length
   std::vector<int> kernel_of_;                        // element -> kernel
   std::vector<math::BlockId> blocks_;                 // element -> matrix block
+  ElementColoring coloring_;
 };
 
 /// A marker on an ANCF beam at a reference arc length: the point r = S(xi) e (thesis

@@ -55,6 +55,11 @@ AncfPlate::AncfPlate(std::string name, PlateGeometry geometry, ancf_plate::Plate
       }
       element_locals_.push_back(locals);
     }
+  // element (ei, ej) has the nodes ei..ei+1 x ej..ej+1: elements of equal parities share none
+  std::vector<int> color(element_locals_.size());
+  for (int ei = 0; ei < nx(); ++ei)
+    for (int ej = 0; ej < ny(); ++ej) color[element_number(ei, ej)] = 2 * (ei % 2) + ej % 2;
+  coloring_ = ElementColoring(color);
 }
 
 Vec3 AncfPlate::node_position(int i, int j) const {
@@ -99,20 +104,22 @@ void AncfPlate::declare_blocks(math::SparseBlockAssembler& matrix) {
 void AncfPlate::assemble(const State& state, AssemblyTarget& target) const {
   const MatrixScales& k = target.scales;
   const bool want_K = target.matrix && k.kq != 0.0;
-  Mat48 K, H;
-  for (int el = 0; el < num_elements(); ++el) {
+  // 4 colors by (i mod 2, j mod 2), in parallel within each (core/parallel.hpp); the
+  // scratch matrices live on each thread's stack
+  for_each_colored(coloring_, [&](int el) {
     const Vec48 e = element_coordinates(state.q, el);
     Vec48 Q = Vec48::Zero();
+    Mat48 K;
     if (want_K) K.setZero();
     elasticity_.add_forces(e, Q, want_K ? &K : nullptr);
     if (target.forces) scatter(el, Q, *target.forces);
     if (target.matrix) {
       // km M + kq K, K = -dQ/de (no velocity dependence)
-      H = k.km * mass_;
+      Mat48 H = k.km * mass_;
       if (want_K) H += k.kq * K;
       target.matrix->add(blocks_[el], H);
     }
-  }
+  });
 }
 
 void AncfPlate::add_gravity(const Vec3& g, const State&, AssemblyTarget& target) const {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "seaflex/core/parallel.hpp"
 #include "seaflex/elements/ancf_plate_elastic.hpp"
 #include "seaflex/model/body.hpp"
 #include "seaflex/model/marker.hpp"
@@ -85,6 +86,8 @@ class AncfPlate : public Body {
   int element_number(int ei, int ej) const { return ei * ny() + ej; }
   ancf_plate::Vec48 element_coordinates(const VecX& q, int el) const;
   const ancf_plate::PlateElasticity& elasticity() const { return elasticity_; }
+  /// 4 colors by (ei mod 2, ej mod 2): no two elements of one color share a node.
+  const ElementColoring& coloring() const { return coloring_; }
 
  private:
   void scatter(int el, const ancf_plate::Vec48& Qe, VecX& Q) const;
@@ -98,6 +101,7 @@ class AncfPlate : public Body {
   ancf_plate::Mat48 mass_;
   std::vector<std::array<Index, 48>> element_locals_;
   std::vector<math::BlockId> blocks_;
+  ElementColoring coloring_;
 };
 
 /// A marker at a plate node: the point r, and as axes the slopes x = r_p1, y = r_p2 and

@@ -94,8 +94,9 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
   const double area_i = 0.25 * std::numbers::pi * c.internal_diameter * c.internal_diameter;
   const double m_int = c.internal_density * area_i;  // contents' mass per length
   const double ca_mass = ocean_->rho() * c.ca * 0.25 * std::numbers::pi * c.diameter * c.diameter;
-  Mat12 K;
-  for (int k = 0; k < beam_.num_elements(); ++k) {
+  // the beam's even, then odd elements; in parallel within each (core/parallel.hpp)
+  for_each_colored(beam_.coloring(), [&](int k) {
+    Mat12 K;
     const double l = beam_.element_length(k);
     const Vec12 e = beam_.element_coordinates(state.q, k);
     const Vec12 ed = state.v.segment<12>(beam_.node_index(k));
@@ -146,7 +147,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       }
     }
     if (want_matrix) target.matrix->add(blocks_[k], K);
-  }
+  });
 }
 
 }  // namespace seaflex
