@@ -2,21 +2,17 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/integrators/instrumented.hpp"
 
 namespace seaflex {
 
 namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 }  // namespace
 
 GeneralizedAlphaSettings GeneralizedAlphaSettings::from_rho_inf(double rho) {
@@ -62,29 +58,6 @@ void GeneralizedAlpha::prepare(const Dae& dae) {
   prepared_ = true;
 }
 
-void GeneralizedAlpha::evaluate(const Dae& dae, const State& state, const DaeRequest& request,
-                                DaeEval& eval) {
-  const auto t0 = Clock::now();
-  dae.evaluate(state, request, eval);
-  ++stats_.evaluations;
-  stats_.assembly_s += since(t0);
-}
-
-bool GeneralizedAlpha::factorize(const SpMat& A) {
-  const auto t0 = Clock::now();
-  const bool ok = newton_solver_.factorize(A);
-  ++stats_.factorizations;
-  stats_.factorize_s += since(t0);
-  return ok;
-}
-
-void GeneralizedAlpha::solve(const VecX& b, VecX& x) {
-  const auto t0 = Clock::now();
-  newton_solver_.solve(b, x);
-  ++stats_.solves;
-  stats_.solve_s += since(t0);
-}
-
 void GeneralizedAlpha::start(const Dae& dae, State& state) {
   if (!prepared_) prepare(dae);
   q_scale_ = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
@@ -93,7 +66,7 @@ void GeneralizedAlpha::start(const Dae& dae, State& state) {
   DaeRequest req;
   req.matrix = true;
   req.scales.km = 1.0;
-  evaluate(dae, state, req, eval_);
+  instrumented::evaluate(dae, state, req, eval_, stats_);
   if (constant_mass_) mass_ = eval_.kkt.matrix().topLeftCorner(n_, n_);
   if (!initial_solver_.factorize(eval_.kkt.matrix()))
     throw SolverError(fmt::format("generalized-alpha: the augmented matrix [M C_q^T; C_q 0] is "
@@ -137,7 +110,7 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
     req.constraints = false;
     req.matrix = true;
     req.scales.km = 1.0;
-    evaluate(dae, state, req, mass_eval_);
+    instrumented::evaluate(dae, state, req, mass_eval_, stats_);
     M = &mass_eval_.kkt.matrix();
   }
   // out = M a over the top-left n x n block, without a temporary
@@ -191,13 +164,13 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       req.scales = MatrixScales{1.0, 0.0, 0.0};
     }
     try {
-      evaluate(dae, trial_, req, eval_);
+      instrumented::evaluate(dae, trial_, req, eval_, stats_);
       mass_times(dae, trial_, a_, !refresh, Ma_);
     } catch (const SolverError& e) {  // an element cannot be evaluated at this iterate
       return fail(e.what());
     }
     if (refresh) {
-      if (!factorize(eval_.kkt.matrix()))
+      if (!instrumented::factorize(newton_solver_, eval_.kkt.matrix(), stats_))
         return fail(
             fmt::format("the Newton matrix is singular ({}): a mechanism, a body "
                         "without mass or supports, or redundant constraints",
@@ -211,7 +184,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       rhs_.head(n_) -= eval_.CqT_lambda / bp;
       rhs_.tail(m_) = -eval_.C;
     }
-    solve(rhs_, sol_);
+    instrumented::solve(newton_solver_, rhs_, sol_, stats_);
     if (!sol_.allFinite())
       return fail(
           "the Newton update is not finite: NaN/Inf in the forces, or a nearly singular "
@@ -264,7 +237,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   if (m_ > 0) {
     DaeRequest req;
     req.forces = false;
-    evaluate(dae, trial_, req, eval_);
+    instrumented::evaluate(dae, trial_, req, eval_, stats_);
     report.residual = eval_.C.lpNorm<Eigen::Infinity>();
   }
   state.t = trial_.t;

@@ -66,9 +66,6 @@ class GeneralizedAlpha : public Integrator {
 
  private:
   void prepare(const Dae& dae);
-  void evaluate(const Dae& dae, const State& state, const DaeRequest& request, DaeEval& eval);
-  bool factorize(const SpMat& A);
-  void solve(const VecX& b, VecX& x);
   // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n
   void update_iterate(const State& state_n, double h);
   // M a: from the stored constant mass matrix, from eval_ (in_eval: assembled with km = 1

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "seaflex/integrators/instrumented.hpp"
+
 namespace seaflex {
 
 Rk4Augmented::Rk4Augmented(Stabilization stabilization, double alpha, double beta)
@@ -28,12 +30,12 @@ bool Rk4Augmented::factor_at(const Dae& dae, const State& state) {
   req.constraints = false;
   req.matrix = true;
   req.scales.km = 1.0;
-  dae.evaluate(state, req, eval_);
+  instrumented::evaluate(dae, state, req, eval_, stats_);
   return factorize_evaluated();
 }
 
 bool Rk4Augmented::factorize_evaluated() {
-  if (solver_.factorize(eval_.kkt.matrix())) return true;
+  if (instrumented::factorize(solver_, eval_.kkt.matrix(), stats_)) return true;
   failure_ = fmt::format(
       "the augmented matrix [M C_q^T; C_q 0] is singular ({}): a body "
       "without mass or redundant constraints",
@@ -51,7 +53,7 @@ void Rk4Augmented::accelerations(const Dae& dae, const State& state, VecX& a, Ve
     req.matrix = true;
     req.scales.km = 1.0;
   }
-  dae.evaluate(state, req, eval_);
+  instrumented::evaluate(dae, state, req, eval_, stats_);
   if (refactor && !factorize_evaluated()) {
     a = VecX::Constant(n_, std::nan(""));
     return;
@@ -60,7 +62,7 @@ void Rk4Augmented::accelerations(const Dae& dae, const State& state, VecX& a, Ve
   rhs_.tail(m_) = eval_.gamma;  // thesis eq. (133)
   if (stabilization_ == Stabilization::kBaumgarte)
     rhs_.tail(m_) -= 2.0 * alpha_ * eval_.Cdot + beta_ * beta_ * eval_.C;
-  solver_.solve(rhs_, sol_);
+  instrumented::solve(solver_, rhs_, sol_, stats_);
   a = sol_.head(n_);
   lambda = sol_.tail(m_);
 }
@@ -81,18 +83,18 @@ bool Rk4Augmented::project(const Dae& dae, State& state, double& violation) {
   const double tol = 1e-12 * std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
   // positions: [M C_q^T; C_q 0][dq; mu] = [0; -C], a Newton step towards C = 0
   for (int it = 0; it < 5; ++it) {
-    dae.evaluate(state, req, eval_);
+    instrumented::evaluate(dae, state, req, eval_, stats_);
     violation = eval_.C.lpNorm<Eigen::Infinity>();
     if (violation <= tol) break;
     if (!factor_at(dae, state)) return false;
     rhs_.head(n_).setZero();
     rhs_.tail(m_) = -eval_.C;
-    solver_.solve(rhs_, sol_);
+    instrumented::solve(solver_, rhs_, sol_, stats_);
     state.q += sol_.head(n_);
   }
   // velocities: [M C_q^T; C_q 0][dv; mu] = [0; -(C_q v + C_t)], unless already at
   // round-off (always so for linear constraints: every RK4 stage satisfies C_q a = gamma)
-  dae.evaluate(state, req, eval_);
+  instrumented::evaluate(dae, state, req, eval_, stats_);
   violation = eval_.C.lpNorm<Eigen::Infinity>();
   if (eval_.Cdot.lpNorm<Eigen::Infinity>() <=
       1e-14 * std::max(1.0, state.v.lpNorm<Eigen::Infinity>()))
@@ -100,7 +102,7 @@ bool Rk4Augmented::project(const Dae& dae, State& state, double& violation) {
   if (!factor_at(dae, state)) return false;
   rhs_.head(n_).setZero();
   rhs_.tail(m_) = -eval_.Cdot;
-  solver_.solve(rhs_, sol_);
+  instrumented::solve(solver_, rhs_, sol_, stats_);
   state.v += sol_.head(n_);
   return true;
 }
@@ -131,6 +133,8 @@ StepReport Rk4Augmented::step(const Dae& dae, State& state, double h) {
   state.v += (h / 6.0) * (k1v_ + 2.0 * k2v_ + 2.0 * k3v_ + k4v_);
   state.t += h;
   report.iterations = 4;
+  ++stats_.steps;
+  stats_.iterations += 4;
   if (!failure_.empty()) {
     report.ok = false;
     report.message = failure_;
@@ -145,7 +149,7 @@ StepReport Rk4Augmented::step(const Dae& dae, State& state, double h) {
   } else if (m_ > 0) {
     DaeRequest req;
     req.forces = false;
-    dae.evaluate(state, req, eval_);
+    instrumented::evaluate(dae, state, req, eval_, stats_);
     report.residual = eval_.C.lpNorm<Eigen::Infinity>();
   }
   return report;
