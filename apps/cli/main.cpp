@@ -273,7 +273,8 @@ int cmd_bench(const std::string& file, double duration) {
       "{:.4g} x real time\n",
       integrator->name(), d.duration, wall, wall / d.duration, d.duration / wall);
   fmt::print(
-      "steps: {} accepted, {} rejected, smallest {:g} s; {:.3g} Newton iterations per step\n",
+      "steps: {} accepted, {} rejected, smallest {:g} s; {:.3g} iterations per step (Newton; "
+      "stages for rk4)\n",
       rep.steps, rep.rejected_steps, rep.min_step,
       static_cast<double>(rep.iterations) / std::max(1L, rep.steps));
   fmt::print("work: {} evaluations, {} factorizations, {} solves\n", st.evaluations,
