@@ -8,6 +8,7 @@ usage: test_cli.py SEAFLEX_EXECUTABLE SOURCE_DIR
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -349,6 +350,48 @@ class Cli(unittest.TestCase):
             self.assertEqual(files["1", name], files["2", name], name)
         # a thread count below 1 is a usage error
         self.assertEqual(run("run", path, "-o", self.dir, "--threads", "0").returncode, 2)
+
+    def test_generalized_alpha_riser_threads_and_bench(self):
+        # the 100-element benchmark riser (bench/riser/) for 20 s with generalized-alpha:
+        # it stays at its static bow, and the files are byte-identical with 1 and 2 threads
+        with open(os.path.join(SRC, "bench", "riser", "riser_n100.yaml")) as f:
+            text = f.read()
+        self.assertIn("duration: 600", text)
+        path = self.model(text.replace("duration: 600", "duration: 20"))
+        files = {}
+        for threads in ["1", "2"]:
+            out = os.path.join(self.dir, "ga" + threads)
+            r = run("run", path, "-o", out, "--quiet", "--threads", threads)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("200 steps of 0.1 s", r.stdout)
+            with open(os.path.join(out, "timeseries.csv"), "rb") as f:
+                files[threads] = f.read()
+        self.assertEqual(files["1"], files["2"])
+        header, rows = read_csv(os.path.join(self.dir, "ga1", "timeseries.csv"))
+        self.assertEqual(len(rows), 21)
+        x = [row[header.index("riser.n50.x")] for row in rows]
+        self.assertAlmostEqual(x[0], 5.3195, places=3)
+        self.assertLess(max(x) - min(x), 1e-6)
+        # seaflex bench: no files, the speed and the split of the work
+        r = run("bench", path, "--duration", "5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("steps: 50 accepted, 0 rejected", r.stdout)
+        speed = re.search(r"([0-9.e+]+) x real time", r.stdout)
+        self.assertIsNotNone(speed, r.stdout)
+        self.assertGreater(float(speed.group(1)), 1.0)
+        self.assertRegex(r.stdout, r"wall time: assembly [0-9.]+ s")
+
+    def test_generalized_alpha_bad_settings(self):
+        path = self.model("""bodies:
+  b: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [0, 0, 0]}
+dynamics: {integrator: hht, rho_inf: 0.3, time_step: 0.1, duration: 1, min_time_step: 0.01}
+""")
+        r = run("check", path)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("model.yaml:3:38: dynamics.rho_inf: must be between 0.5 and 1, got 0.3",
+                      r.stderr)
+        self.assertIn("dynamics.min_time_step: applies only with step_control: adaptive",
+                      r.stderr)
 
 
 if __name__ == "__main__":
