@@ -1,7 +1,8 @@
 // KktSolver with each backend (SparseLU, KLU, UMFPACK): a hand-made KKT system with a
 // known solution, the Newton KKT matrices of examples/cantilever.yaml and
 // examples/riser_in_current.yaml (unsymmetric: Morison drag), refactorization with new
-// values on the same pattern, singular matrices, and the backend names.
+// values on the same pattern, singular matrices, statics with each backend, and the
+// backend names.
 // The residual is measured as the normwise backward error
 //   |A x - b|_inf / (|A|_inf |x|_inf + |b|_inf),
 // which a backward-stable LU keeps near machine epsilon whatever the conditioning; the
@@ -13,6 +14,7 @@
 
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/solvers/kkt_solver.hpp"
+#include "seaflex/solvers/statics.hpp"
 
 using namespace seaflex;
 
@@ -228,6 +230,29 @@ TEST(KktSolver, SingularMatrixIsReported) {
     VecX x;
     solver.solve(regular * x_exact, x);
     EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-13);
+  }
+}
+
+// StaticsSettings::linear_solver: Newton statics of the cantilever (tip deflection 0.5490 m,
+// docs/verification.md) gives the same equilibrium with every backend.
+TEST(KktSolver, StaticsAgreesAcrossBackends) {
+  const io::Model model =
+      io::load_model_file(std::string(SEAFLEX_SOURCE_DIR) + "/examples/cantilever.yaml");
+  EXPECT_EQ(model.statics.linear_solver, kDefaultLinearSolver);
+  VecX reference;
+  for (const LinearSolverKind kind : kKinds) {
+    SCOPED_TRACE(std::string(KktSolver::to_string(kind)));
+    StaticsSettings settings = model.statics;
+    settings.linear_solver = kind;
+    State state = model.system->initial_state();
+    const StaticsReport report = solve_statics(*model.system, state, settings);
+    EXPECT_LT(report.residual, 1e-8);
+    EXPECT_NEAR(state.q[6 * 10 + 2], -0.5490, 1e-4);  // tip z, 10 elements
+    if (reference.size() == 0) {
+      reference = state.q;
+    } else {
+      EXPECT_LT((state.q - reference).lpNorm<Eigen::Infinity>(), 1e-10);
+    }
   }
 }
 
