@@ -25,6 +25,7 @@ class NewtonStatics {
       : dae_(dae),
         s_(settings),
         eval_(dae.make_eval()),
+        solver_(settings.linear_solver),
         n_(dae.num_coordinates()),
         m_(dae.num_constraints()) {
     rhs_.resize(n_ + m_);

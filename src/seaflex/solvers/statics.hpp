@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 
+#include "seaflex/solvers/kkt_solver.hpp"
 #include "seaflex/system/dae.hpp"
 
 namespace seaflex {
@@ -20,6 +21,7 @@ struct StaticsSettings {
   double min_increment = 1e-4;  ///< smallest load increment before giving up
   double time = 0.0;            ///< time at which time-varying loads are evaluated
   bool line_search = true;      ///< retry a failed increment with the energy line search
+  LinearSolverKind linear_solver = kDefaultLinearSolver;  ///< backend of the Newton solves
 };
 
 struct StaticsReport {
