@@ -39,7 +39,10 @@ GeneralizedAlphaSettings GeneralizedAlphaSettings::hht(double rho) {
   return s;
 }
 
-GeneralizedAlpha::GeneralizedAlpha(GeneralizedAlphaSettings settings) : s_(settings) {
+GeneralizedAlpha::GeneralizedAlpha(GeneralizedAlphaSettings settings)
+    : s_(settings),
+      newton_solver_(settings.linear_solver),
+      initial_solver_(settings.linear_solver) {
   if (!(s_.alpha_m < 1.0 && s_.alpha_f < 1.0 && s_.beta > 0.0 && s_.gamma > 0.0))
     throw std::invalid_argument("generalized-alpha: need alpha_m, alpha_f < 1 and beta, gamma > 0");
   if (s_.max_iterations < 1 || !(s_.tolerance > 0.0))
@@ -99,6 +102,13 @@ void GeneralizedAlpha::update_iterate(const State& state_n, double h) {
   trial_.v = state_n.v + (h * (1.0 - s_.gamma)) * abar_n_ + (h * s_.gamma) * abar_;
 }
 
+void GeneralizedAlpha::predict() {
+  const double am = s_.alpha_m, af = s_.alpha_f;
+  // abar_{n+1} = -(1/2 - beta)/beta abar_n, and a_{n+1} from eq. (9) of Arnold & Bruls
+  const double c = -(0.5 - s_.beta) / s_.beta;
+  a_ = ((1.0 - am) * c * abar_n_ - af * a_n_ + am * abar_n_) / (1.0 - af);
+}
+
 void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX& a, bool in_eval,
                                   VecX& out) {
   const SpMat* M = &mass_;
@@ -129,9 +139,11 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   const double tol = s_.tolerance * q_scale_;
   trial_ = state;
   trial_.t = state.t + h;
-  // predictor: a_{n+1} = 0 (Arnold & Bruls 2007, sec. 3); a_{n+1} = a_n would extrapolate the
-  // alternating accelerations of high modes that the scheme damps (a_{n+1} ~ -rho a_n)
-  a_.setZero();
+  // predictor: the a_{n+1} for which q_{n+1} = q_n + h v_n (abar_{n+1} = -(1/2 - beta)/beta
+  // abar_n): the iterations start from where the body would coast, not from an
+  // extrapolation of accelerations, which after a sudden load (a tensioner switched on, a
+  // snap) carry the step far from the solution and make Newton diverge
+  predict();
   bool want_fresh = s_.newton == NewtonMode::kFull || factored_h_ != h;
   double previous = 0.0;       // |dq| of the previous update
   double last_theta = 0.0;     // the previous contraction rate (0: none yet)
@@ -216,7 +228,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       if (!converged && (theta > 0.5 || too_slow) && !refresh) {
         want_fresh = true;   // a Jacobian at this iterate, or, when the stale matrix has
         if (theta >= 1.0) {  // driven the iterate away, at the predictor again
-          a_.setZero();
+          predict();
           trial_.lambda = state.lambda;
           previous = last_theta = 0.0;
           continue;

@@ -43,6 +43,7 @@ struct GeneralizedAlphaSettings {
   NewtonMode newton = NewtonMode::kModified;
   int max_iterations = 12;  ///< Newton iterations per step before the step fails
   double tolerance = 1e-9;  ///< on the estimated error of q, relative to the model's size
+  LinearSolverKind linear_solver = kDefaultLinearSolver;  ///< backend of the Newton solves
   /// Chung & Hulbert's parameters for a spectral radius rho_inf in [0, 1].
   static GeneralizedAlphaSettings from_rho_inf(double rho_inf);
   /// HHT-alpha's parameters (alpha_m = 0) for rho_inf in [1/2, 1].
@@ -66,6 +67,8 @@ class GeneralizedAlpha : public Integrator {
 
  private:
   void prepare(const Dae& dae);
+  // the first iterate of a step (a_)
+  void predict();
   // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n
   void update_iterate(const State& state_n, double h);
   // M a: from the stored constant mass matrix, from eval_ (in_eval: assembled with km = 1

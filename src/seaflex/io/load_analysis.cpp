@@ -35,12 +35,14 @@ IntegratorFactory build_alpha(MapReader& r, bool hht) {
   const auto newton = r.choice("newton", Need::kOptional, {"modified", "full"});
   const auto iterations = r.integer("max_iterations", Need::kOptional, 1, 1000);
   const auto tol = r.number("tolerance", Need::kOptional, NumberRule::range(1e-15, 1e-2, ""));
+  const auto solver = r.choice("linear_solver", Need::kOptional, {"klu", "sparselu", "umfpack"});
   const double rho_inf = rho.value_or(hht ? 0.9 : 0.8);
   GeneralizedAlphaSettings s = hht ? GeneralizedAlphaSettings::hht(rho_inf)
                                    : GeneralizedAlphaSettings::from_rho_inf(rho_inf);
   s.newton = newton == "full" ? NewtonMode::kFull : NewtonMode::kModified;
   if (iterations) s.max_iterations = *iterations;
   if (tol) s.tolerance = *tol;
+  if (solver) s.linear_solver = *KktSolver::parse(*solver);
   return [s]() { return std::make_unique<GeneralizedAlpha>(s); };
 }
 
@@ -77,6 +79,8 @@ void load_statics(const YAML::Node& node, LoadContext& ctx) {
   if (const auto v = r.number("tolerance", Need::kOptional, NumberRule::range(1e-15, 1e-2, "")))
     s.tolerance = *v;
   if (const auto v = r.number("time", Need::kOptional, NumberRule::nonnegative("s"))) s.time = *v;
+  if (const auto v = r.choice("linear_solver", Need::kOptional, {"klu", "sparselu", "umfpack"}))
+    s.linear_solver = *KktSolver::parse(*v);
   if (const YAML::Node ls = r.get("line_search"); ls.IsDefined()) {
     if (ls.IsScalar() && (ls.Scalar() == "true" || ls.Scalar() == "false"))
       s.line_search = ls.Scalar() == "true";
