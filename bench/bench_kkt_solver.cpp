@@ -1,9 +1,9 @@
 // The sparse KKT backends of KktSolver (SparseLU, KLU, UMFPACK) on the Newton matrix of
 // an implicit step, [km M - kq dQ/dq - kv dQ/dv, C_q^T; C_q, 0] with km = 1, kq = 1e-4,
-// kv = 1e-2, of the 300 m riser of examples/riser_in_current.yaml (pinned at the seabed,
-// top fixed in x and y, 3 m/s current with Morison drag, inertia and added mass, gravity
-// and buoyancy), meshed with N = 10, 100, 1000 ANCF elements and evaluated at its static
-// equilibrium (bowed in the current; solve_statics, 4 load steps, before any timing). The
+// kv = 1e-2, of the standard benchmark riser bench/riser/riser_n<N>.yaml (300 m, pinned at
+// the seabed, top fixed in x and y, 3 m/s current with Morison drag, inertia and added
+// mass, gravity and buoyancy), N = 10, 100, 1000 ANCF elements, evaluated at its static
+// equilibrium (bowed in the current; solve_statics before any timing). The
 // state matters: at the straight initial state many entries of the fixed pattern are exact
 // zeros, which UMFPACK drops from its factors and KLU and SparseLU keep. The riser bends in
 // the x-z plane only, so the y couplings stay exact zeros at equilibrium too.
@@ -40,57 +40,14 @@ struct KktProblem {
   seaflex::VecX b;
 };
 
-// Block-style YAML (no braces) so that fmt::format needs no escapes.
-std::string riser_yaml(int elements) {
-  return fmt::format(R"(title: benchmark riser
-environment:
-  gravity: 9.81
-  water:
-    density: 1025
-    depth: 300
-  current:
-    speed: 3.0
-    direction: 0
-bodies:
-  riser:
-    type: ancf_beam
-    start: [0, 0, -300]
-    end: [0, 0, 10]
-    elements: {}
-    outer_diameter: 0.7
-    inner_diameter: 0.4
-    youngs_modulus: 210e9
-    density: 7850
-hydrodynamics:
-  riser:
-    cd: 0.65
-    cm: 1.6
-supports:
-  - body: riser
-    node: start
-    type: pinned
-  - body: riser
-    node: end
-    type: fixed
-    fix: [x, y]
-loads:
-  - type: point_force
-    body: riser
-    node: end
-    force: [0, 0, 6.0e6]
-statics:
-  load_steps: 4
-)",
-                     elements);
-}
-
 // The KKT matrix and a right-hand side [Q; -C], built once per N.
 const KktProblem& problem(int elements) {
   static std::map<int, KktProblem> cache;
   auto it = cache.find(elements);
   if (it != cache.end()) return it->second;
-  const seaflex::io::Model model =
-      seaflex::io::load_model_text(riser_yaml(elements), fmt::format("bench_riser_{}", elements));
+  // the standard riser benchmark (bench/riser/riser_n<N>.yaml)
+  const seaflex::io::Model model = seaflex::io::load_model_file(
+      fmt::format("{}/bench/riser/riser_n{}.yaml", SEAFLEX_SOURCE_DIR, elements));
   const seaflex::System& system = *model.system;
   seaflex::State state = system.initial_state();
   seaflex::solve_statics(system, state, model.statics);  // throws when it fails
