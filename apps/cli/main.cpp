@@ -113,10 +113,13 @@ void print_summary(const io::Model& model) {
   if (model.dynamics) {
     const auto& d = *model.dynamics;
     fmt::print(
-        "dynamics: {}, time step {:g} s, duration {:g} s ({} steps), output every {:g} s, start "
-        "from {}\n",
-        d.integrator, d.time_step, d.duration, std::lround(d.duration / d.time_step),
-        d.output_interval,
+        "dynamics: {}, time step {:g} s{}, duration {:g} s ({} steps), output every {:g} s, "
+        "start from {}\n",
+        d.integrator, d.time_step,
+        d.adaptive ? fmt::format(" (adaptive, down to {:g} s)",
+                                 d.min_time_step > 0 ? d.min_time_step : d.time_step / 1024)
+                   : "",
+        d.duration, std::lround(d.duration / d.time_step), d.output_interval,
         d.start_from_statics ? "static equilibrium" : "the model's initial state");
   } else {
     fmt::print("dynamics: none (add a dynamics section to use 'seaflex run')\n");
