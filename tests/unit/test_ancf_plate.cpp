@@ -203,6 +203,40 @@ TEST(AncfPlate, TangentIsForceDerivative) {
   }
 }
 
+// L1, thesis eq. (90): the constant strains are the chord strains (d - l) / l of the edges
+// (docs/theory/ancf_plate.md). A uniform stretch by l1, l2 (shear g) gives eps11 = l1 - 1,
+// eps22 = l2 - 1, eps12 = g / 2 exactly, so U = a b / 2 (N11 eps11 + N22 eps22 + 2 N12 eps12)
+TEST(AncfPlate, L1ConstantStrainsAreChordStrains) {
+  const double l1 = 1.03, l2 = 0.98;
+  const Vec48 e = flat(Vec3(0.2, 0.1, 0.0), Vec3(l1, 0, 0), Vec3(0, l2, 0), kA, kB);
+  const PlateElasticity el(kA, kB, steel(), MidplaneModel::kL1, TransverseModel::kT3);
+  Vec48 Q = Vec48::Zero();
+  const double U = el.add_midplane_l1(e, Q, nullptr);
+  const double C = steel().membrane_rigidity(), nu = steel().poisson_ratio;
+  const double e11 = l1 - 1.0, e22 = l2 - 1.0;
+  const double ref = 0.5 * kA * kB * C * (e11 * e11 + e22 * e22 + 2.0 * nu * e11 * e22);
+  EXPECT_NEAR(U, ref, 1e-12 * ref);
+}
+
+// L1 is not the gradient of a potential (thesis eq. 90-92, docs/theory/ancf_plate.md):
+// K = K(eps) + sum_a (S^a e) (dN_a/de)^T with K(eps) symmetric; no constant strain depends
+// on r_p1p2, so K - K^T on the rows of r_p1p2 and the columns of the positions is the second
+// term alone, which is not zero on a bent element
+TEST(AncfPlate, L1TangentIsNotSymmetric) {
+  const Vec48 e = deformed(0.05, 3);
+  const PlateElasticity el(kA, kB, steel(), MidplaneModel::kL1, TransverseModel::kT3);
+  Vec48 Q = Vec48::Zero();
+  Mat48 K = Mat48::Zero();
+  el.add_midplane_l1(e, Q, &K);
+  const Mat48 A = K - K.transpose();
+  double block = 0.0;
+  for (int c = 0; c < 16; ++c)
+    for (int d = 0; d < 16; ++d)
+      if (column_role(c).kind == 3 && column_role(d).kind == 0)
+        block = std::max(block, A.block<3, 3>(3 * c, 3 * d).lpNorm<Eigen::Infinity>());
+  EXPECT_GT(block, 1e-3 * K.lpNorm<Eigen::Infinity>());
+}
+
 // L3 is the exact midplane energy integrated exactly: the exact model with 7 x 7 points
 // gives the same numbers to round-off
 TEST(AncfPlate, L3EqualsExactMidplaneIntegratedExactly) {

@@ -205,12 +205,13 @@ double PlateElasticity::add_midplane_l1(const Vec48& e, Vec48& Q, Mat48* K) cons
   const Mat316 R = relative_nodes(e);
   const int c00 = column_of(0, 0, 0), ca0 = column_of(1, 0, 0), c0b = column_of(0, 1, 0),
             cab = column_of(1, 1, 0);
-  // thesis eq. (90), see the file header
+  // thesis eq. (90), see the file header: the mean engineering strain of the two chords
+  // along each edge direction (the beam's eq. 24 on each edge)
   const Vec3 d1a = R.col(ca0) - R.col(c00), d1b = R.col(cab) - R.col(c0b);
   const Vec3 d2a = R.col(c0b) - R.col(c00), d2b = R.col(cab) - R.col(ca0);
-  const double a2 = a_ * a_, b2 = b_ * b_;
-  const double e11 = 0.5 * (d1a.dot(d1b) / a2 - 1.0);
-  const double e22 = 0.5 * (d2a.dot(d2b) / b2 - 1.0);
+  const double l1a = d1a.norm(), l1b = d1b.norm(), l2a = d2a.norm(), l2b = d2b.norm();
+  const double e11 = 0.5 * (l1a + l1b) / a_ - 1.0;
+  const double e22 = 0.5 * (l2a + l2b) / b_ - 1.0;
   double e12 = 0.0;
   for (int c1 = 0; c1 < 2; ++c1)
     for (int c2 = 0; c2 < 2; ++c2)
@@ -226,14 +227,17 @@ double PlateElasticity::add_midplane_l1(const Vec48& e, Vec48& Q, Mat48* K) cons
     *K += expand(B);
     // + sum_a vec(R S_a) (d n_a / de)^T, the derivative of the constant strains
     Mat316 de11 = Mat316::Zero(), de22 = Mat316::Zero(), de12 = Mat316::Zero();
-    de11.col(ca0) += d1b / (2.0 * a2);
-    de11.col(c00) -= d1b / (2.0 * a2);
-    de11.col(cab) += d1a / (2.0 * a2);
-    de11.col(c0b) -= d1a / (2.0 * a2);
-    de22.col(c0b) += d2b / (2.0 * b2);
-    de22.col(c00) -= d2b / (2.0 * b2);
-    de22.col(cab) += d2a / (2.0 * b2);
-    de22.col(ca0) -= d2a / (2.0 * b2);
+    // d|d| = (d / |d|) . dd
+    const Vec3 u1a = d1a / (2.0 * a_ * l1a), u1b = d1b / (2.0 * a_ * l1b);
+    const Vec3 u2a = d2a / (2.0 * b_ * l2a), u2b = d2b / (2.0 * b_ * l2b);
+    de11.col(ca0) += u1a;
+    de11.col(c00) -= u1a;
+    de11.col(cab) += u1b;
+    de11.col(c0b) -= u1b;
+    de22.col(c0b) += u2a;
+    de22.col(c00) -= u2a;
+    de22.col(cab) += u2b;
+    de22.col(ca0) -= u2b;
     for (int c1 = 0; c1 < 2; ++c1)
       for (int c2 = 0; c2 < 2; ++c2) {
         const int p1 = column_of(c1, c2, 1), p2 = column_of(c1, c2, 2);

@@ -14,12 +14,14 @@
 // Midplane models:
 //   kExact  eps of eq. (80) at each point, Gauss quadrature with gauss_points^2 points.
 //   kL1     strains constant over the element from the corner vectors (eq. 90):
-//             eps11 = 1/2 ((r_a0 - r_00).(r_ab - r_0b) / a^2 - 1)
-//             eps22 = 1/2 ((r_0b - r_00).(r_ab - r_a0) / b^2 - 1)
+//             eps11 = 1/2 (|r_a0 - r_00| / a + |r_ab - r_0b| / a) - 1
+//             eps22 = 1/2 (|r_0b - r_00| / b + |r_ab - r_a0| / b) - 1
 //             eps12 = 1/8 sum over the corners of r_p1 . r_p2
-//           and Q = -(sum N_ij int S^ij dP) e (eq. 91-93). Not the gradient of a
-//           potential: the tangent is not symmetric; the returned energy is that of the
-//           constant strains.
+//           (the beam's chord strain, eq. 24, averaged over two opposite edges) and
+//           Q = -(sum N_ij int S^ij dP) e (eq. 91-93): the constant strains times the
+//           gradient of the pointwise strains (eq. 88). Not the gradient of a potential,
+//           in the thesis as here: the tangent is not symmetric (docs/theory/ancf_plate.md);
+//           the returned energy is that of the constant strains.
 //   kL3     the Green-Lagrange strains with no simplification (eq. 94-97): a polynomial
 //           energy integrated exactly. The closed form of eq. (95-97) contracts 256x256
 //           tensors per evaluation; Gauss quadrature with 7 x 7 points gives the same
