@@ -153,13 +153,6 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   return state;
 }
 
-SimulationSettings simulation_settings(const io::DynamicsSettings& d) {
-  SimulationSettings s{d.duration, d.time_step, d.output_interval};
-  s.step_control = d.adaptive ? StepControl::kAdaptive : StepControl::kFixed;
-  s.min_time_step = d.min_time_step;
-  return s;
-}
-
 int cmd_check(const std::string& file) {
   const io::Model model = load_model(file);
   print_summary(model);
@@ -186,7 +179,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
   State state =
       d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
   auto integrator = d.make_integrator();
-  Simulation sim(*model.system, io::model_channels(model), *integrator, simulation_settings(d));
+  Simulation sim(*model.system, io::model_channels(model), *integrator, d.simulation());
   io::CsvRecorder csv(dir / "timeseries.csv");
   sim.add_recorder(csv);
   ProgressLine progress(quiet);
@@ -265,7 +258,7 @@ int cmd_bench(const std::string& file, double duration) {
                rep.increments, seconds_since(t0));
   }
   auto integrator = d.make_integrator();
-  Simulation sim(*model.system, io::model_channels(model), *integrator, simulation_settings(d));
+  Simulation sim(*model.system, io::model_channels(model), *integrator, d.simulation());
   const auto t0 = Clock::now();
   const SimulationReport rep = sim.run(state);
   const double wall = seconds_since(t0);

@@ -129,8 +129,13 @@ class Cli(unittest.TestCase):
             self.assertAlmostEqual(row[tip], rows[0][tip], delta=1e-7)
 
     def test_progress_line_and_quiet(self):
-        # the main example lasts more than two seconds: a progress line appears, unless --quiet
-        ex = os.path.join(EXAMPLES, "cantilever.yaml")
+        # a run of more than two seconds shows a progress line, unless --quiet: the main
+        # example, simulated three times as long (alone it takes about 2 s on a fast machine,
+        # right at the threshold)
+        with open(os.path.join(EXAMPLES, "cantilever.yaml")) as f:
+            text = f.read()
+        self.assertIn("duration: 5.0 ", text)
+        ex = self.model(text.replace("duration: 5.0 ", "duration: 15.0 "))
         r = run("run", ex, "-o", os.path.join(self.dir, "a"))
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("[seaflex] t = ", r.stderr)

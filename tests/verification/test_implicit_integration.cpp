@@ -139,20 +139,13 @@ class MemoryRecorder : public Recorder {
   std::vector<std::string> names_;
 };
 
-SimulationSettings settings_of(const io::DynamicsSettings& d) {
-  SimulationSettings s{d.duration, d.time_step, d.output_interval};
-  s.step_control = d.adaptive ? StepControl::kAdaptive : StepControl::kFixed;
-  s.min_time_step = d.min_time_step;
-  return s;
-}
-
 }  // namespace
 
 TEST(GeneralizedAlphaBeam, AdaptiveStepSurvivesSnapLoad) {
   {  // fixed step: Newton cannot follow the snap at h = 0.1 s
     io::Model model = io::load_model_text(snap_model("fixed"), "snap");
     auto ga = model.dynamics->make_integrator();
-    Simulation sim(*model.system, model.system->channels(), *ga, settings_of(*model.dynamics));
+    Simulation sim(*model.system, model.system->channels(), *ga, model.dynamics->simulation());
     State s = model.system->initial_state();
     try {
       sim.run(s);
@@ -166,7 +159,7 @@ TEST(GeneralizedAlphaBeam, AdaptiveStepSurvivesSnapLoad) {
   }
   io::Model model = io::load_model_text(snap_model("adaptive"), "snap");
   auto ga = model.dynamics->make_integrator();
-  Simulation sim(*model.system, model.system->channels(), *ga, settings_of(*model.dynamics));
+  Simulation sim(*model.system, model.system->channels(), *ga, model.dynamics->simulation());
   MemoryRecorder rec;
   sim.add_recorder(rec);
   State s = model.system->initial_state();
@@ -222,7 +215,7 @@ TEST(GeneralizedAlphaBeam, FloatingHemisphereAgreesWithRk4) {
     model_text.replace(model_text.find(key), key.size(), fmt::format("integrator: {}", integrator));
     io::Model model = io::load_model_text(model_text, "hemisphere_in_waves.yaml");
     auto method = model.dynamics->make_integrator();
-    Simulation sim(*model.system, model.system->channels(), *method, settings_of(*model.dynamics));
+    Simulation sim(*model.system, model.system->channels(), *method, model.dynamics->simulation());
     MemoryRecorder rec;
     sim.add_recorder(rec);
     State s = model.system->initial_state();

@@ -10,6 +10,7 @@
 
 #include "seaflex/hydro/ocean.hpp"
 #include "seaflex/integrators/integrator.hpp"
+#include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/statics.hpp"
 #include "seaflex/system/system.hpp"
 
@@ -25,6 +26,14 @@ struct DynamicsSettings {
   double min_time_step = 0.0;  ///< s; 0: time_step / 1024
   std::function<std::unique_ptr<Integrator>()> make_integrator;
   int line = 0;  ///< line of the dynamics section, for messages
+
+  /// The time loop's settings.
+  SimulationSettings simulation() const {
+    SimulationSettings s{duration, time_step, output_interval};
+    s.step_control = adaptive ? StepControl::kAdaptive : StepControl::kFixed;
+    s.min_time_step = min_time_step;
+    return s;
+  }
 };
 
 struct Model {
