@@ -24,7 +24,9 @@
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/elements/ancf_beam.hpp"
 #include "seaflex/elements/rigid_body.hpp"
+#include "seaflex/forces/pneumatic_cylinder.hpp"
 #include "seaflex/forces/point_load.hpp"
+#include "seaflex/forces/rope.hpp"
 #include "seaflex/forces/rotational_spring.hpp"
 #include "seaflex/forces/spring_damper.hpp"
 #include "seaflex/math/rotation.hpp"
@@ -1088,6 +1090,108 @@ TEST(SpringDamper, ForceIsMinusEnergyGradientAndTangentsMatchDifferences) {
   EXPECT_EQ(probe.matrix(s, MatrixScales{0.0, 1.0, 1.0}).norm(), 0.0);
   EXPECT_EQ(sling.potential_energy(s), 0.0);
   EXPECT_EQ(sling.tension(s), 0.0);
+}
+
+// a rope through four points on two rigid bodies, a beam and ground, with 1, 4 and 2 parts:
+// the force is minus the gradient of 1/2 EA/L0 (L - L0)^2 with L = sum n_i |d_i|, the
+// tangents match differences (the damping's q-derivative included), and the tension is
+// EA (L - L0)/L0 + c L'; slack, it carries nothing
+TEST(Rope, ForceIsMinusEnergyGradientAndTangentsMatchDifferences) {
+  World w(22);
+  const State& s = w.s;
+  auto make = [&](double slack_factor, double damping) {
+    std::vector<MarkerPair> segs;
+    segs.emplace_back(w.R1(), w.B1e());
+    segs.emplace_back(w.B1e(), w.G());
+    segs.emplace_back(w.G(), w.R2());
+    const std::vector<int> parts{1, 4, 2};
+    const double L = distance(*w.R1(), *w.B1e(), s) + 4 * distance(*w.B1e(), *w.G(), s) +
+                     2 * distance(*w.G(), *w.R2(), s);
+    return std::make_pair(
+        std::make_unique<Rope>("wire", std::move(segs), parts, slack_factor * L, 3e7, damping), L);
+  };
+  for (double damping : {0.0, 2e4}) {
+    SCOPED_TRACE("damping " + std::to_string(damping));
+    auto [rope, L] = make(0.98, damping);
+    check_force(*rope, w, s, s);
+    EXPECT_NEAR(rope->length(s), L, 1e-14 * L);
+    const StateFn length = [&](const State& t) -> VecX {
+      return VecX::Constant(1, rope->length(t));
+    };
+    const double Ld = fd_along_v(s, length)[0];
+    const double T = 3e7 * (L - 0.98 * L) / (0.98 * L) + damping * Ld;
+    EXPECT_NEAR(rope->tension(s), std::max(T, 0.0), 1e-9 * std::abs(T));
+    EXPECT_NEAR(rope->potential_energy(s), 0.5 * 3e7 / (0.98 * L) * std::pow(0.02 * L, 2),
+                1e-9 * rope->potential_energy(s));
+  }
+  auto [slack, L] = make(1.05, 1e3);
+  const Probe probe = Probe::of(w.n, *slack);
+  EXPECT_EQ(probe.forces(s).norm(), 0.0);
+  EXPECT_EQ(probe.matrix(s, MatrixScales{0.0, 1.0, 1.0}).norm(), 0.0);
+  EXPECT_EQ(slack->tension(s), 0.0);
+  EXPECT_EQ(slack->potential_energy(s), 0.0);
+}
+
+// gas spring (isothermal and adiabatic, compressed and extended) with Stribeck friction,
+// rigid-rigid and beam-ground: the force at rest is minus the gradient of the gas energy,
+// the tangents match differences (the friction's velocity tangent inside and outside the
+// regularization band), and the pressure and friction are eq. (184) and (185) evaluated
+// by hand
+TEST(PneumaticCylinder, GasLawStribeckFrictionAndTangents) {
+  World w(23);
+  const State& s = w.s;
+  struct Case {
+    std::string label;
+    MarkerFactory a, b;
+    double exponent, compression, regularization;
+  };
+  const std::vector<Case> cases = {
+      {"isothermal, compressed, rigid-rigid", &World::R1, &World::R2, 1.0, 0.4, 1e-3},
+      {"adiabatic, extended, rigid-rigid", &World::R1, &World::R2, 1.4, -0.3, 1e-3},
+      {"adiabatic, compressed, beam-ground, wide band", &World::B1e, &World::G, 1.4, 0.2, 5.0},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.label);
+    GasSpringLaw gas{0.05, 8e6, 0.2, c.exponent};
+    StribeckFriction fr;
+    fr.coulomb = 2e3;
+    fr.static_friction = 5e3;
+    fr.stribeck_velocity = 0.05;
+    fr.viscous = 1e4;
+    fr.pressure_coefficient = 5e-4;
+    fr.max_pressure_friction = 4.2e3;
+    fr.regularization_velocity = c.regularization;
+    auto a = (w.*c.a)(), b = (w.*c.b)();
+    const double L = distance(*a, *b, s);
+    PneumaticCylinder cyl("cyl", std::move(a), std::move(b), gas, fr);
+    cyl.set_reference_length(L + c.compression);
+    check_force(cyl, w, s, s);
+    // eq. (184): P = P0 (V0 / (V0 - A c))^n
+    const double P = 8e6 * std::pow(0.2 / (0.2 - 0.05 * c.compression), c.exponent);
+    EXPECT_NEAR(cyl.pressure(s), P, 1e-12 * P);
+    // eq. (185), far outside the regularization band tanh = sgn
+    const StateFn length = [&](const State& t) -> VecX { return VecX::Constant(1, cyl.length(t)); };
+    const double v = fd_along_v(s, length)[0];
+    EXPECT_NEAR(cyl.extension_rate(s), v, 1e-7 * (1 + std::abs(v)));
+    if (c.regularization < 1e-2 && std::abs(v) > 0.1) {
+      const double sgn = v > 0 ? 1.0 : -1.0;
+      const double expected = (2e3 + 3e3 * std::exp(-std::abs(v) / 0.05)) * sgn + 1e4 * v +
+                              std::min(5e-4 * P, 4.2e3) * sgn;
+      EXPECT_NEAR(cyl.friction(s), expected, 1e-9 * std::abs(expected));
+    }
+    EXPECT_NEAR(cyl.force(s), P * 0.05 - cyl.friction(s), 1e-12 * P * 0.05);
+    EXPECT_GE(cyl.dissipation(s), 0.0);
+  }
+  // the friction law alone: continuous through v = 0, odd, and its derivative matches
+  // differences across the kink of |v| at 0
+  StribeckFriction fr{1e3, 3e3, 0.02, 500.0, 1e-4, 2e3, 1e-3};
+  EXPECT_EQ(fr.force(0.0, 1e7), 0.0);
+  EXPECT_NEAR(fr.force(-0.3, 1e7), -fr.force(0.3, 1e7), 1e-12);
+  for (double v : {-0.05, -1e-4, 0.0, 2e-4, 0.01, 0.3}) {
+    const double h = 1e-8;
+    const double fd = (fr.force(v + h, 1e7) - fr.force(v - h, 1e7)) / (2 * h);
+    EXPECT_NEAR(fr.dforce_dv(v, 1e7), fd, 1e-5 * std::abs(fd) + 1e-3) << v;
+  }
 }
 
 // V = 1/2 k theta^2 between z axes: at exactly aligned axes (theta = 0), in the series

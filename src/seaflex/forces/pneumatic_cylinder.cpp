@@ -1,0 +1,155 @@
+#include "seaflex/forces/pneumatic_cylinder.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "seaflex/core/errors.hpp"
+
+namespace seaflex {
+
+// thesis eq. (184), polytropic: P V^n = P0 V0^n
+double GasSpringLaw::pressure_at(double c) const {
+  return pressure * std::pow(volume / gas_volume(c), exponent);
+}
+
+double GasSpringLaw::pressure_slope(double c) const {
+  return exponent * pressure_at(c) * piston_area / gas_volume(c);
+}
+
+double GasSpringLaw::energy(double c) const {
+  // integral of P A dc = integral of P dV' over the volume swept, V from V0 down to V
+  const double V = gas_volume(c);
+  if (std::abs(exponent - 1.0) < 1e-12) return pressure * volume * std::log(volume / V);
+  return pressure * volume / (exponent - 1.0) * (std::pow(volume / V, exponent - 1.0) - 1.0);
+}
+
+// thesis eq. (185) with sgn(v) -> tanh(v / v_r)
+double StribeckFriction::force(double v, double p) const {
+  const double s = std::tanh(v / regularization_velocity);
+  const double stribeck =
+      coulomb + (static_friction - coulomb) * std::exp(-std::abs(v) / stribeck_velocity);
+  const double fp = std::min(pressure_coefficient * p, max_pressure_friction);
+  return (stribeck + fp) * s + viscous * v;
+}
+
+double StribeckFriction::dforce_dv(double v, double p) const {
+  const double s = std::tanh(v / regularization_velocity);
+  const double ds = (1.0 - s * s) / regularization_velocity;
+  const double e = std::exp(-std::abs(v) / stribeck_velocity);
+  const double stribeck = coulomb + (static_friction - coulomb) * e;
+  // d/dv exp(-|v|/v_s) = -sgn(v) e / v_s; times tanh it is -|tanh| e / v_s (continuous)
+  const double dstribeck_s = -(static_friction - coulomb) * e / stribeck_velocity * std::abs(s);
+  const double fp = std::min(pressure_coefficient * p, max_pressure_friction);
+  return (stribeck + fp) * ds + dstribeck_s + viscous;
+}
+
+double StribeckFriction::dforce_dpressure(double v, double p) const {
+  if (pressure_coefficient * p >= max_pressure_friction) return 0.0;
+  return pressure_coefficient * std::tanh(v / regularization_velocity);
+}
+
+PneumaticCylinder::PneumaticCylinder(std::string name, std::unique_ptr<Marker> a,
+                                     std::unique_ptr<Marker> b, GasSpringLaw gas,
+                                     StribeckFriction friction)
+    : Force(std::move(name)), pair_(std::move(a), std::move(b)), gas_(gas), friction_(friction) {}
+
+void PneumaticCylinder::declare_blocks(math::SparseBlockAssembler& matrix) {
+  const auto& dofs = pair_.bind();
+  block_ = dofs.empty() ? -1 : matrix.declare_block(dofs, dofs);
+}
+
+double PneumaticCylinder::length(const State& state) const {
+  return (pair_.b().position(state) - pair_.a().position(state)).norm();
+}
+
+double PneumaticCylinder::extension_rate(const State& state) const {
+  PairVectorEval d;
+  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
+  const double L = d.value.norm();
+  return L > 0.0 ? d.value.dot(d.rate) / L : 0.0;
+}
+
+double PneumaticCylinder::pressure(const State& state) const {
+  return gas_.pressure_at(compression(length(state)));
+}
+
+double PneumaticCylinder::friction(const State& state) const {
+  return friction_.force(extension_rate(state), pressure(state));
+}
+
+double PneumaticCylinder::force(const State& state) const {
+  return pressure(state) * gas_.piston_area - friction(state);
+}
+
+double PneumaticCylinder::dissipation(const State& state) const {
+  return friction(state) * extension_rate(state);
+}
+
+void PneumaticCylinder::assemble(const State& state, double, AssemblyTarget& target) const {
+  const auto& dofs = pair_.dofs();
+  if (dofs.empty()) return;
+  PairVectorEval d;
+  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
+  const double L = d.value.norm();
+  if (!(L > 0.0))
+    throw SolverError(fmt::format("t = {:.6g} s: the end points of cylinder {} met, so its line "
+                                  "of action is undefined",
+                                  state.t, name()),
+                      state.t);
+  const double c = compression(L);
+  const double V = gas_.gas_volume(c);
+  if (!(V > 0.01 * gas_.volume))
+    throw SolverError(
+        fmt::format("t = {:.6g} s: cylinder {} is compressed by {:.4g} m, which leaves {:.3g} "
+                    "of its gas volume: the piston has run out of stroke (the load exceeds what "
+                    "the tensioner can hold, or the gas volume is too small)",
+                    state.t, name(), c, V / gas_.volume),
+        state.t);
+  const Vec3 n = d.value / L;
+  const double Ld = n.dot(d.rate);
+  const double P = gas_.pressure_at(c);
+  // tension (spring convention): T = F_friction(L', P) - P A
+  const double T = friction_.force(Ld, P) - P * gas_.piston_area;
+  const Vec3 f = T * n;  // force on a; -f on b: Q = -J_d^T f
+  const Index m = static_cast<Index>(dofs.size());
+  if (target.forces)
+    for (Index i = 0; i < m; ++i) (*target.forces)[dofs[i]] -= d.J.col(i).dot(f);
+  if (!target.matrix) return;
+  const MatrixScales& k = target.scales;
+  // dP/dL = -dP/dc
+  const double dPdL = -gas_.pressure_slope(c);
+  const double dTdL = (friction_.dforce_dpressure(Ld, P) - gas_.piston_area) * dPdL;
+  const double dTdLd = friction_.dforce_dv(Ld, P);
+  PairSquare A = PairSquare::Zero(m, m);
+  if (k.kq != 0.0) {
+    const Mat3 Pn = Mat3::Identity() - n * n.transpose();
+    // df/dd with d' held; L' = n . d' depends on d through n
+    const Mat3 dfdd =
+        dTdL * n * n.transpose() + (T / L) * Pn + dTdLd * n * (Pn * d.rate).transpose() / L;
+    const Mat3 dfdrate = dTdLd * n * n.transpose();
+    PairSquare dQ = -(d.J.transpose() * dfdd * d.J + d.J.transpose() * dfdrate * d.Jv);
+    pair_.add_hessian(MarkerVector::kPoint, -1.0, 1.0, state, -f, dQ);
+    A -= k.kq * dQ;
+  }
+  if (k.kv != 0.0) A += k.kv * dTdLd * d.J.transpose() * n * n.transpose() * d.J;  // -kv dQ/dv
+  target.matrix->add(block_, A);
+}
+
+double PneumaticCylinder::potential_energy(const State& state) const {
+  return gas_.energy(compression(length(state)));
+}
+
+void PneumaticCylinder::add_channels(ChannelList& channels) const {
+  channels.push_back(
+      {fmt::format("{}.pressure", name()), [this](const State& s) { return pressure(s); }});
+  channels.push_back({fmt::format("{}.stroke", name()),
+                      [this](const State& s) { return length(s) - reference_length_; }});
+  channels.push_back(
+      {fmt::format("{}.force", name()), [this](const State& s) { return force(s); }});
+  channels.push_back(
+      {fmt::format("{}.friction", name()), [this](const State& s) { return friction(s); }});
+}
+
+}  // namespace seaflex
