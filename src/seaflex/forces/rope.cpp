@@ -41,6 +41,13 @@ double Rope::length(const State& state) const {
   return L;
 }
 
+int Rope::first_vanishing_segment(const State& state) const {
+  for (std::size_t s = 0; s < segments_.size(); ++s)
+    if (!((segments_[s].b().position(state) - segments_[s].a().position(state)).norm() > 0.0))
+      return static_cast<int>(s);
+  return -1;
+}
+
 double Rope::tension(const State& state) const {
   double L = 0.0, Ld = 0.0;
   PairVectorEval d;

@@ -37,6 +37,11 @@ class Rope : public Force {
   double length(const State& state) const;
   double tension(const State& state) const;  ///< N, >= 0
   int num_segments() const { return static_cast<int>(segments_.size()); }
+  double free_length() const { return free_length_; }
+  void set_free_length(double free_length) { free_length_ = free_length; }
+  double axial_stiffness() const { return axial_stiffness_; }
+  /// The first segment whose two points coincide in state (-1: none).
+  int first_vanishing_segment(const State& state) const;
 
  private:
   std::vector<MarkerPair> segments_;

@@ -38,6 +38,10 @@ struct LoadContext {
   std::map<std::string, std::pair<YAML::Mark, std::string>> constraint_origin;
   /// where each connection was defined (name -> mark, key path)
   std::map<std::string, std::pair<YAML::Mark, std::string>> connection_origin;
+  /// run once the system is numbered, with its initial state: settings that depend on the
+  /// initial geometry (a cylinder's reference length, a rope's free length from its
+  /// initial tension) and checks of it; they report problems to diag
+  std::vector<std::function<void(const State& s0)>> at_start;
 
   /// Reads the body name at key: a body of the model, or ground (nullptr with *ground set)
   /// when allow_ground. Reports a dangling reference with a suggestion.
@@ -91,6 +95,25 @@ void load_plate_support(MapReader& reader, const AncfPlate& plate, const YAML::N
                         std::set<std::pair<std::string, Index>>& held, LoadContext& ctx);
 /// A marker at a plate node (`node: n<i>_<j>`), after reporting other keys as errors.
 std::unique_ptr<Marker> plate_marker(MapReader& reader, const AncfPlate& plate);
+
+// entries of joints and connections (load_joints.cpp)
+/// name, from and to of a joint or connection entry; from and to are read whatever becomes
+/// of the name, so their problems are reported too
+struct PairEntry {
+  std::optional<std::string> name;  ///< nullopt after a reported problem
+  YAML::Node from, to;              ///< undefined when missing (reported)
+};
+/// The `name` of an entry, checked (letters, digits, '_', '-') and unique among names;
+/// what = "joint" or "connection" for messages.
+std::optional<std::string> read_entry_name(MapReader& r, std::set<std::string>& names,
+                                           const char* what);
+PairEntry read_pair(MapReader& r, std::set<std::string>& names, const char* what);
+/// The markers of an entry (nullptr where missing or after a reported problem).
+std::pair<std::unique_ptr<Marker>, std::unique_ptr<Marker>> read_markers(MapReader& r,
+                                                                         const PairEntry& e,
+                                                                         LoadContext& ctx);
+/// true or false only (absent: false; nullopt after a reported problem).
+std::optional<bool> read_bool(MapReader& r, std::string_view key);
 
 void load_bodies(const YAML::Node& node, LoadContext& ctx);
 void load_markers(const YAML::Node& node, LoadContext& ctx);

@@ -1,6 +1,6 @@
 // joints: constraints between two markers (ball, universal, revolute, cylindrical,
 // prismatic, fixed, and flex = ball + rotational spring-damper);
-// connections: force elements between two markers (spring).
+// the entries (name, from, to) that joints and connections share.
 #include <fmt/format.h>
 
 #include <numbers>
@@ -8,7 +8,6 @@
 
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/forces/rotational_spring.hpp"
-#include "seaflex/forces/spring_damper.hpp"
 #include "seaflex/io/load_context.hpp"
 
 namespace seaflex::io {
@@ -30,42 +29,41 @@ JointType joint_type(const std::string& t) {
   return JointType::kBall;  // ball and flex
 }
 
+}  // namespace
+
 bool valid_name(const std::string& s) {
   return !s.empty() &&
          s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") ==
              std::string::npos;
 }
 
-// name, from and to of a joint or connection entry; from and to are read whatever becomes
-// of the name, so their problems are reported too
-struct PairEntry {
-  std::optional<std::string> name;  ///< nullopt after a reported problem
-  YAML::Node from, to;              ///< undefined when missing (reported)
-};
-
-PairEntry read_pair(MapReader& r, std::set<std::string>& names, const char* what) {
-  PairEntry e;
+std::optional<std::string> read_entry_name(MapReader& r, std::set<std::string>& names,
+                                           const char* what) {
   const auto name = r.text("name", Need::kRequired);
-  e.from = r.get("from", Need::kRequired, "a marker name or {body: ..., ...}");
-  e.to = r.get("to", Need::kRequired, "a marker name or {body: ..., ...}");
-  if (!name) return e;
+  if (!name) return std::nullopt;
   if (!valid_name(*name)) {
     r.error("name", fmt::format("{} names may use letters, digits, '_' and '-' only (they become "
                                 "output channel names such as <name>.fx)",
                                 what));
-    return e;
+    return std::nullopt;
   }
   if (!names.insert(*name).second) {
     r.error("name", fmt::format("a {} named '{}' repeats the name of an earlier joint or "
                                 "connection: names must be unique (they name output channels)",
                                 what, *name));
-    return e;
+    return std::nullopt;
   }
-  e.name = *name;
+  return name;
+}
+
+PairEntry read_pair(MapReader& r, std::set<std::string>& names, const char* what) {
+  PairEntry e;
+  e.name = read_entry_name(r, names, what);
+  e.from = r.get("from", Need::kRequired, "a marker name or {body: ..., ...}");
+  e.to = r.get("to", Need::kRequired, "a marker name or {body: ..., ...}");
   return e;
 }
 
-// the markers of an entry (nullptr where missing or after a reported problem)
 std::pair<std::unique_ptr<Marker>, std::unique_ptr<Marker>> read_markers(MapReader& r,
                                                                          const PairEntry& e,
                                                                          LoadContext& ctx) {
@@ -83,8 +81,6 @@ std::optional<bool> read_bool(MapReader& r, std::string_view key) {
   r.error(key, fmt::format("expected true or false, got {}", describe(n)));
   return std::nullopt;
 }
-
-}  // namespace
 
 void load_joints(const YAML::Node& node, LoadContext& ctx) {
   if (!node.IsSequence()) {
@@ -142,66 +138,6 @@ void load_joints(const YAML::Node& node, LoadContext& ctx) {
     }
     ctx.constraint_origin[*entry.name] = {node[i].Mark(), path};
     ctx.system.add_constraint(std::move(joint));
-  }
-}
-
-void load_connections(const YAML::Node& node, LoadContext& ctx) {
-  if (!node.IsSequence()) {
-    ctx.diag.error(node.Mark(), "connections",
-                   fmt::format("expected a list of connections, got {}", describe(node)));
-    return;
-  }
-  std::set<std::string>& names = ctx.joint_and_connection_names;
-  for (std::size_t i = 0; i < node.size(); ++i) {
-    const std::string path = fmt::format("connections[{}]", i);
-    MapReader r(ctx.diag, node[i], path);
-    if (!r.valid()) continue;
-    const auto entry = read_pair(r, names, "connection");
-    r.choice("type", Need::kRequired, {"spring"});
-    const auto free_length = r.number("free_length", Need::kRequired, NumberRule::nonnegative("m"));
-    const bool linear = r.has("stiffness"), tabled = r.has("tension_table");
-    std::optional<SpringLaw> law;
-    if (linear && tabled) {
-      r.error("tension_table", "give either stiffness or tension_table, not both");
-    } else if (tabled) {
-      if (const auto rows = r.table("tension_table", Need::kRequired, 2, "extensions")) {
-        std::vector<double> x, t;
-        for (const auto& row : *rows) {
-          x.push_back(row[0]);
-          t.push_back(row[1]);
-        }
-        try {
-          law = SpringLaw::table(std::move(x), std::move(t));
-        } catch (const std::invalid_argument&) {
-          r.error("tension_table",
-                  "expected two or more rows [extension (m), tension (N)] with extensions "
-                  "increasing strictly");
-        }
-      }
-    } else if (const auto k =
-                   r.number("stiffness", Need::kRequired, NumberRule::nonnegative("N/m"))) {
-      law = SpringLaw::linear(*k);
-    }
-    std::optional<double> damping = 0.0;
-    if (r.has("damping"))
-      damping = r.number("damping", Need::kRequired, NumberRule::nonnegative("N s/m"));
-    const auto slack = read_bool(r, "slack");
-    auto [from, to] = read_markers(r, entry, ctx);
-    r.finish();
-    if (!entry.name || !free_length || !law || !damping || !slack || !from || !to) continue;
-    if (from->body() == nullptr && to->body() == nullptr) {
-      r.error("to", fmt::format("connection '{}' connects ground to ground", *entry.name));
-      continue;
-    }
-    if (from->body() == to->body()) {
-      r.error("to", fmt::format("connection '{}' connects body '{}' to itself", *entry.name,
-                                from->body()->name()));
-      continue;
-    }
-    ctx.connection_origin[*entry.name] = {node[i].Mark(), path};
-    ctx.system.add_force(std::make_unique<SpringDamper>(*entry.name, std::move(from), std::move(to),
-                                                        *free_length, std::move(*law), *damping,
-                                                        *slack));
   }
 }
 

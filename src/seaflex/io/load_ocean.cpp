@@ -254,7 +254,7 @@ void load_hull(const YAML::Node& node, const std::string& path, const RigidBody&
 }
 
 void load_members(const YAML::Node& node, const std::string& path, const RigidBody& body,
-                  LoadContext& ctx) {
+                  std::shared_ptr<const hydro::Ocean> ocean, LoadContext& ctx) {
   if (!node.IsSequence()) {
     ctx.diag.error(node.Mark(), path, "expected a list of members");
     return;
@@ -284,15 +284,22 @@ void load_members(const YAML::Node& node, const std::string& path, const RigidBo
     members.push_back(mem);
   }
   ctx.system.add_force(std::make_unique<RigidMorison>(fmt::format("{}.morison", body.name()), body,
-                                                      std::move(members), ctx.model.ocean));
+                                                      std::move(members), std::move(ocean)));
 }
 
 void load_rigid_hydro(MapReader& r, const RigidBody& body, LoadContext& ctx) {
   const hydro::Ocean& ocean = *ctx.model.ocean;
   if (const YAML::Node n = r.get("hull"); n.IsDefined())
     load_hull(n, r.key_path("hull"), body, ctx);
+  // include_current: false: the members feel the waves only (the mean current load on the
+  // hull is taken by station keeping that is not modelled, as in thesis 3.3.3)
+  std::shared_ptr<const hydro::Ocean> member_ocean = ctx.model.ocean;
+  if (r.has("include_current") &&
+      r.choice("include_current", Need::kRequired, {"true", "false"}).value_or("true") == "false")
+    member_ocean = std::make_shared<const hydro::Ocean>(ocean.rho(), ocean.g(), ocean.depth(),
+                                                        ocean.waves(), hydro::CurrentProfile{});
   if (const YAML::Node n = r.get("morison"); n.IsDefined())
-    load_members(n, r.key_path("morison"), body, ctx);
+    load_members(n, r.key_path("morison"), body, std::move(member_ocean), ctx);
 
   HydroMatrixSet set;
   set.heading = math::roll_pitch_yaw_from_rotation(body.initial().orientation)[2];

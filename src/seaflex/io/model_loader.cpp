@@ -180,7 +180,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();
@@ -222,6 +222,8 @@ Model load(const YAML::Node& root, const std::string& name) {
   model.system->finalize();
   check_constraints(ctx);
   check_springs(ctx);
+  const State s0 = model.system->initial_state();
+  for (const auto& f : ctx.at_start) f(s0);
   diag.throw_if_any();
   return model;
 }
