@@ -20,6 +20,7 @@
 #include <iterator>
 #include <string>
 
+#include "memory_recorder.hpp"
 #include "seaflex/core/errors.hpp"
 #include "seaflex/forces/spring_damper.hpp"
 #include "seaflex/integrators/generalized_alpha.hpp"
@@ -30,6 +31,7 @@
 #include "seaflex/solvers/statics.hpp"
 
 using namespace seaflex;
+using seaflex::testing::MemoryRecorder;
 
 namespace {
 
@@ -117,27 +119,6 @@ dynamics: {{integrator: generalized_alpha, time_step: 0.1, duration: 3, output_i
 )",
                      control);
 }
-
-// every row of a run, in memory
-class MemoryRecorder : public Recorder {
- public:
-  void begin(const std::vector<std::string>& names) override { names_ = names; }
-  void record(double t, std::span<const double> row) override {
-    times.push_back(t);
-    rows.emplace_back(row.begin(), row.end());
-  }
-  void flush() override {}
-  std::size_t column(const std::string& name) const {
-    for (std::size_t i = 0; i < names_.size(); ++i)
-      if (names_[i] == name) return i;
-    throw std::out_of_range(name);
-  }
-  std::vector<double> times;
-  std::vector<std::vector<double>> rows;
-
- private:
-  std::vector<std::string> names_;
-};
 
 }  // namespace
 
