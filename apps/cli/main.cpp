@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "plot_command.hpp"
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/parallel.hpp"
 #include "seaflex/io/csv_recorder.hpp"
@@ -335,6 +336,15 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   add_threads(bench);
 
+  std::string plot_dir, plot_out;
+  std::vector<std::string> plot_channels;
+  auto* plot = app.add_subcommand(
+      "plot", "PNG figures of a run (DIR/timeseries.csv) into DIR/plots, with python3-matplotlib");
+  plot->add_option("DIR", plot_dir, "output directory of seaflex run")->required();
+  plot->add_option("CHANNEL", plot_channels,
+                   "channels to plot (names or shell patterns); none: the standard report");
+  plot->add_option("--out", plot_out, "directory for the PNG files (default DIR/plots)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -348,6 +358,7 @@ int main(int argc, char** argv) {
     if (*run) return cmd_run(file, dir, quiet);
     if (*modes) return cmd_modes(file, dir, count, about_initial, quiet);
     if (*bench) return cmd_bench(file, bench_duration);
+    if (*plot) return cli::cmd_plot(plot_dir, plot_channels, plot_out);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitInput;

@@ -308,6 +308,38 @@ class Cli(unittest.TestCase):
         self.assertLessEqual(max(abs(e) for e in eta), 0.1 + 1e-12)
         self.assertGreater(max(abs(e) for e in eta), 0.099)
 
+    def test_drilling_rig_runs_and_plots(self):
+        # the flagship example in one command, then its report: PNG files with the motion of
+        # the platform, the riser's deflection, the tensioner and the joint forces
+        out = os.path.join(self.dir, "rig")
+        r = run("run", os.path.join(EXAMPLES, "drilling_rig.yaml"), "-o", out, "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        self.assertEqual(rows[-1][0], 200.0)
+        stroke = [row[header.index("gas_1.stroke")] for row in rows]
+        self.assertGreater(max(stroke) - min(stroke), 0.1)  # the tensioner works in the waves
+        r = run("plot", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for name in ["motion_platform.png", "beam_riser.png", "tensions.png", "cylinders.png",
+                     "joint_forces.png"]:
+            path = os.path.join(out, "plots", name)
+            with open(path, "rb") as f:
+                head = f.read(24)
+            self.assertEqual(head[:8], b"\x89PNG\r\n\x1a\n", name)
+            width, height = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+            self.assertGreaterEqual(width, 800, name)
+            self.assertGreaterEqual(height, 500, name)
+            self.assertGreater(os.path.getsize(path), 20000, name)  # not an empty canvas
+        r = run("plot", out, "platform.*", "--out", os.path.join(self.dir, "pngs"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(self.dir, "pngs", "platform.pitch.png")))
+        r = run("plot", out, "no_such_channel")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("no channel matches 'no_such_channel'", r.stderr)
+        r = run("plot", os.path.join(self.dir, "empty"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("no timeseries.csv here", r.stderr)
+
     def test_riser_bows_with_the_current_in_statics(self):
         out = os.path.join(self.dir, "riser")
         r = run("statics", os.path.join(EXAMPLES, "riser_in_current.yaml"), "-o", out)

@@ -1,0 +1,207 @@
+#!/usr/bin/python3
+"""Draws PNG figures of a seaflex run: `seaflex plot DIR [CHANNEL ...]` calls this script.
+
+    seaflex_plot.py DIR [CHANNEL ...] [--out PLOTDIR] [--snapshots N]
+
+DIR holds timeseries.csv (seaflex run). Without channels it writes a report into
+DIR/plots/:
+  motion_<body>.png     surge, sway, heave, roll, pitch, yaw of each rigid body
+  beam_<beam>.png       horizontal deflection (x and y) against height at N moments,
+                        with the envelope (min and max over the run) of each node
+  tensions.png          every <name>.tension channel (ropes and springs)
+  cylinders.png         stroke, pressure and force of every pneumatic cylinder
+  joint_forces.png      the resultant force of every joint (at a riser's end joint: the
+                        riser's effective tension there)
+With channels (names, or shell patterns such as 'platform.*'), one figure per channel,
+<channel>.png. Uses Debian's python3-matplotlib (Agg backend, no display needed).
+Exit codes: 0 done, 2 bad input (no such directory, file or channel).
+"""
+import argparse
+import csv
+import fnmatch
+import os
+import re
+import sys
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:  # pragma: no cover - depends on the machine
+    sys.stderr.write("seaflex plot: needs matplotlib (Debian: apt-get install python3-matplotlib)\n")
+    sys.exit(2)
+
+
+def fail(message):
+    sys.stderr.write("seaflex plot: %s\n" % message)
+    sys.exit(2)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader, None)
+        if not header or header[0] != "time":
+            fail("%s: expected a seaflex CSV file whose first column is 'time'" % path)
+        cols = {name: [] for name in header}
+        for row in reader:
+            if len(row) != len(header):
+                break  # a run cut short may leave a partial last line
+            for name, value in zip(header, row):
+                cols[name].append(float(value))
+    return header, cols
+
+
+def steady_axis(ax, values):
+    """A signal constant to round-off gets a +-1 axis instead of one magnifying 1e-13."""
+    lo, hi = min(values), max(values)
+    if hi - lo <= 1e-9 * max(1.0, abs(lo), abs(hi)):
+        mid = 0.5 * (lo + hi)
+        ax.set_ylim(mid - 1.0, mid + 1.0)
+
+
+def save(fig, path, written):
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    written.append(path)
+
+
+def rigid_bodies(header):
+    names = set(h[: -len(".roll")] for h in header if h.endswith(".roll"))
+    return sorted(n for n in names if n + ".pitch" in header and n + ".x" in header)
+
+
+def beams(header):
+    found = {}
+    for h in header:
+        m = re.fullmatch(r"(.+)\.n(\d+)\.x", h)
+        if m:
+            found.setdefault(m.group(1), set()).add(int(m.group(2)))
+    return {b: sorted(n) for b, n in found.items() if b + ".n0.z" in header}
+
+
+def plot_motion(body, t, cols, out, written):
+    fig, axes = plt.subplots(3, 2, figsize=(10, 8), sharex=True)
+    items = [("x", "surge x (m)"), ("roll", "roll (deg)"), ("y", "sway y (m)"),
+             ("pitch", "pitch (deg)"), ("z", "heave z (m)"), ("yaw", "yaw (deg)")]
+    for ax, (key, label) in zip(axes.flat, items):
+        ax.plot(t, cols["%s.%s" % (body, key)], lw=1)
+        steady_axis(ax, cols["%s.%s" % (body, key)])
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel("time (s)")
+    fig.suptitle("%s: motion of the centre of gravity" % body)
+    save(fig, os.path.join(out, "motion_%s.png" % body), written)
+
+
+def plot_beam(beam, nodes, t, cols, snapshots, out, written):
+    fig, axes = plt.subplots(1, 2, figsize=(10, 8), sharey=True)
+    n = len(t)
+    picks = sorted(set(int(round(k * (n - 1) / max(1, snapshots - 1))) for k in range(snapshots)))
+    for comp, ax in zip(("x", "y"), axes):
+        for i in picks:
+            xs = [cols["%s.n%d.%s" % (beam, k, comp)][i] for k in nodes]
+            zs = [cols["%s.n%d.z" % (beam, k)][i] for k in nodes]
+            ax.plot(xs, zs, lw=1, label="t = %g s" % t[i])
+        lo = [min(cols["%s.n%d.%s" % (beam, k, comp)]) for k in nodes]
+        hi = [max(cols["%s.n%d.%s" % (beam, k, comp)]) for k in nodes]
+        zs0 = [cols["%s.n%d.z" % (beam, k)][0] for k in nodes]
+        ax.fill_betweenx(zs0, lo, hi, color="grey", alpha=0.2, label="envelope")
+        ax.set_xlabel("%s (m)" % comp)
+        ax.grid(True, alpha=0.3)
+    axes[0].set_ylabel("z (m)")
+    axes[1].legend(fontsize=7, loc="best")
+    fig.suptitle("%s: horizontal position against height" % beam)
+    save(fig, os.path.join(out, "beam_%s.png" % beam), written)
+
+
+def plot_group(title, t, series, ylabel, path, written):
+    if not series:
+        return
+    fig, ax = plt.subplots(figsize=(10, 5))
+    for name, values in series:
+        ax.plot(t, values, lw=1, label=name)
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(title)
+    save(fig, path, written)
+
+
+def report(header, cols, out, snapshots, written):
+    t = cols["time"]
+    for body in rigid_bodies(header):
+        plot_motion(body, t, cols, out, written)
+    for beam, nodes in sorted(beams(header).items()):
+        plot_beam(beam, nodes, t, cols, snapshots, out, written)
+    tensions = [(h[: -len(".tension")], cols[h]) for h in header if h.endswith(".tension")]
+    plot_group("tension of ropes and springs", t, tensions, "tension (N)",
+               os.path.join(out, "tensions.png"), written)
+    cyl = sorted(h[: -len(".stroke")] for h in header
+                 if h.endswith(".stroke") and h[: -len(".stroke")] + ".pressure" in header)
+    if cyl:
+        fig, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True)
+        for name in cyl:
+            axes[0].plot(t, cols[name + ".stroke"], lw=1, label=name)
+            axes[1].plot(t, [p / 1e6 for p in cols[name + ".pressure"]], lw=1, label=name)
+            axes[2].plot(t, cols[name + ".force"], lw=1, label=name)
+        for ax, label in zip(axes, ("stroke (m)", "pressure (MPa)", "force (N)")):
+            ax.set_ylabel(label)
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=8)
+        axes[-1].set_xlabel("time (s)")
+        fig.suptitle("pneumatic cylinders")
+        save(fig, os.path.join(out, "cylinders.png"), written)
+    joints = sorted(h[: -len(".fx")] for h in header
+                    if h.endswith(".fx") and h[: -len(".fx")] + ".fz" in header)
+    series = []
+    for j in joints:
+        fx, fy, fz = cols[j + ".fx"], cols[j + ".fy"], cols[j + ".fz"]
+        series.append((j, [(a * a + b * b + c * c) ** 0.5 for a, b, c in zip(fx, fy, fz)]))
+    plot_group("joint forces (resultant)", t, series, "force (N)",
+               os.path.join(out, "joint_forces.png"), written)
+
+
+def channels(header, cols, patterns, out, written):
+    t = cols["time"]
+    for pattern in patterns:
+        match = [h for h in header[1:] if fnmatch.fnmatchcase(h, pattern)]
+        if not match:
+            fail("no channel matches '%s' (channels are the columns of timeseries.csv)" % pattern)
+        for name in match:
+            plot_group(name, t, [(name, cols[name])], name,
+                       os.path.join(out, "%s.png" % name), written)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="seaflex plot", description=__doc__.split("\n")[0])
+    parser.add_argument("dir", help="the output directory of seaflex run")
+    parser.add_argument("channels", nargs="*", help="channel names or shell patterns")
+    parser.add_argument("--out", help="where to write the PNG files (default DIR/plots)")
+    parser.add_argument("--snapshots", type=int, default=8, help="moments in the beam figures")
+    args = parser.parse_intermixed_args(argv)
+    path = os.path.join(args.dir, "timeseries.csv")
+    if not os.path.isfile(path):
+        fail("%s: no timeseries.csv here (write one with seaflex run MODEL -o %s)"
+             % (args.dir, args.dir))
+    header, cols = read_csv(path)
+    if len(cols["time"]) < 2:
+        fail("%s: fewer than two rows" % path)
+    out = args.out or os.path.join(args.dir, "plots")
+    os.makedirs(out, exist_ok=True)
+    written = []
+    if args.channels:
+        channels(header, cols, args.channels, out, written)
+    else:
+        report(header, cols, out, max(2, args.snapshots), written)
+    for w in written:
+        print("wrote %s" % w)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
