@@ -66,6 +66,16 @@ const std::string kSpring =
     "connections:\n  - {name: s, type: spring, from: face, to: {body: ground, position: [11, 0, "
     "5]}, free_length: 4, stiffness: 1e3}\n";
 
+// a rope from the body over a point above the beam's tip to a point further on
+const std::string kRope =
+    "connections:\n  - {name: w, type: rope, path: [face, {body: ground, position: [11, 0, 5]}, "
+    "{body: ground, position: [15, 0, 5]}], axial_stiffness: 1e8, free_length: 9}\n";
+// a gas cylinder from the box to a point above it
+const std::string kCylinder =
+    "connections:\n  - {name: c, type: pneumatic_cylinder, from: face, to: {body: ground, "
+    "position: [10, 0, 6]}, piston_area: 0.1, gas_pressure: 1e7, gas_volume: 2, friction: "
+    "{coulomb: 1e3, static: 2e3}}\n";
+
 // planar four-bar of parallel revolute joints (hinge axes along y): 3 bodies, 6 x 3 = 18
 // degrees of freedom, 4 x 5 = 20 rows, one degree of freedom left: 3 rows are redundant
 const std::string kFourBar = R"(bodies:
@@ -493,6 +503,46 @@ INSTANTIATE_TEST_SUITE_P(
                                  "position: [10, 0, 0]}, free_length: 0"),
                 "m.yaml:24:5: connections[0]: the end points of spring 's' coincide at the start, "
                 "so the direction of its force is undefined; place its ends apart"},
+        BadCase{"rope parts that do not match its path",
+                kRigid + replace(kRope, "free_length: 9}", "free_length: 9, parts: [4]}"),
+                "m.yaml:24:162: connections[0].parts: expected a list of 2 whole numbers >= "
+                "1, one per segment of the path"},
+        BadCase{"rope through one point",
+                kRigid + replace(kRope,
+                                 "path: [face, {body: ground, position: [11, 0, 5]}, "
+                                 "{body: ground, position: [15, 0, 5]}]",
+                                 "path: [face]"),
+                "m.yaml:24:33: connections[0].path: expected a list of two or more markers "
+                "(names or {body: ..., ...})"},
+        BadCase{
+            "rope on ground only",
+            kRigid + replace(kRope, "path: [face,", "path: [{body: ground, position: [1, 2, 3]},"),
+            "m.yaml:24:33: connections[0].path: every point of rope 'w' is on ground: "
+            "its length cannot change"},
+        BadCase{"rope with free length and initial tension",
+                kRigid + replace(kRope, "free_length: 9}", "free_length: 9, initial_tension: 1e4}"),
+                "m.yaml:24:172: connections[0].initial_tension: give either free_length or "
+                "initial_tension, not both"},
+        BadCase{"rope with zero parts",
+                kRigid + replace(kRope, "free_length: 9}", "free_length: 9, parts: [1, 0]}"),
+                "m.yaml:24:166: connections[0].parts[1]: must be between 1 and 1000, got 0"},
+        BadCase{"cylinder static friction below Coulomb",
+                kRigid + replace(kCylinder, "static: 2e3", "static: 500"),
+                "m.yaml:24:180: connections[0].friction.static: static friction 500 N is "
+                "below the Coulomb friction 1000 N: Stribeck friction falls from static to "
+                "Coulomb"},
+        BadCase{"cylinder friction key misspelt",
+                kRigid + replace(kCylinder, "static: 2e3", "statik: 2e3"),
+                "m.yaml:24:172: connections[0].friction.statik: unknown key; did you mean "
+                "'static'?"},
+        BadCase{
+            "cylinder polytropic exponent out of range",
+            kRigid + replace(kCylinder, "gas_volume: 2,", "gas_volume: 2, polytropic_exponent: 2,"),
+            "m.yaml:24:168: connections[0].polytropic_exponent: must be between 1 and "
+            "1.67, got 2"},
+        BadCase{"cylinder without gas volume", kRigid + replace(kCylinder, "gas_volume: 2,", ""),
+                "m.yaml:24:5: connections[0].gas_volume: required key is missing (a number "
+                "in m^3)"},
         BadCase{"load at a ground marker",
                 kRigid + "loads:\n  - {type: point_force, at: {body: ground, position: [0, 0, 0]}, "
                          "force: [0, 0, 1]}\n",

@@ -175,7 +175,7 @@ void load_cylinder(MapReader& r, const YAML::Node& node, const std::string& path
   const auto p0 = r.number("gas_pressure", Need::kRequired, NumberRule::positive("Pa"));
   const auto v0 = r.number("gas_volume", Need::kRequired, NumberRule::positive("m^3"));
   const auto n = r.has("polytropic_exponent") ? r.number("polytropic_exponent", Need::kRequired,
-                                                         NumberRule::range(1.0, 1.67, "-"))
+                                                         NumberRule::range(1.0, 1.67, ""))
                                               : std::optional<double>(1.0);
   StribeckFriction fr;
   bool friction_ok = true;
