@@ -33,6 +33,9 @@ except ImportError:  # pragma: no cover - depends on the machine
     sys.exit(2)
 
 
+DPI = 110
+
+
 def fail(message):
     sys.stderr.write("seaflex plot: %s\n" % message)
     sys.exit(2)
@@ -63,7 +66,7 @@ def steady_axis(ax, values):
 
 def save(fig, path, written):
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=DPI)
     plt.close(fig)
     written.append(path)
 
@@ -110,6 +113,8 @@ def plot_beam(beam, nodes, t, cols, snapshots, out, written):
         hi = [max(cols["%s.n%d.%s" % (beam, k, comp)]) for k in nodes]
         zs0 = [cols["%s.n%d.z" % (beam, k)][0] for k in nodes]
         ax.fill_betweenx(zs0, lo, hi, color="grey", alpha=0.2, label="envelope")
+        if max(hi) - min(lo) <= 1e-9 * max(1.0, abs(max(hi)), abs(min(lo))):
+            ax.set_xlim(min(lo) - 1.0, max(hi) + 1.0)  # constant to round-off
         ax.set_xlabel("%s (m)" % comp)
         ax.grid(True, alpha=0.3)
     axes[0].set_ylabel("z (m)")
@@ -183,7 +188,10 @@ def main(argv):
     parser.add_argument("channels", nargs="*", help="channel names or shell patterns")
     parser.add_argument("--out", help="where to write the PNG files (default DIR/plots)")
     parser.add_argument("--snapshots", type=int, default=8, help="moments in the beam figures")
+    parser.add_argument("--dpi", type=int, default=110, help="resolution of the PNG files")
     args = parser.parse_intermixed_args(argv)
+    global DPI
+    DPI = max(30, args.dpi)
     path = os.path.join(args.dir, "timeseries.csv")
     if not os.path.isfile(path):
         fail("%s: no timeseries.csv here (write one with seaflex run MODEL -o %s)"
