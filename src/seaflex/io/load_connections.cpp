@@ -110,9 +110,9 @@ void load_rope(MapReader& r, const YAML::Node& node, const std::string& path,
   if (const YAML::Node n = r.get("parts"); n.IsDefined()) {
     const std::size_t want = points_ok ? points.size() - 1 : 0;
     if (!n.IsSequence() || (points_ok && n.size() != want)) {
-      r.error("parts", points_ok ? fmt::format("expected a list of {} whole numbers >= 1, one per "
-                                               "segment of the path",
-                                               want)
+      r.error("parts", points_ok ? fmt::format("expected a list of {} whole number{} >= 1, one "
+                                               "per segment of the path",
+                                               want, want == 1 ? "" : "s")
                                  : std::string("expected a list of whole numbers >= 1, one per "
                                                "segment of the path"));
       parts_ok = false;

@@ -345,8 +345,12 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
     return;
   }
   MapReader w(ctx.diag, env.get("water"), env.key_path("water"));
-  const double rho =
-      w.number("density", Need::kOptional, NumberRule::positive("kg/m^3")).value_or(1025.0);
+  const auto rho_read = w.number("density", Need::kOptional, NumberRule::positive("kg/m^3"));
+  const double rho = rho_read.value_or(1025.0);
+  if (rho_read && *rho_read < 100.0)
+    w.error("density", fmt::format("{:g} kg/m^3 is implausibly low for water; seaflex uses "
+                                   "kg/m^3 (sea water: 1025), not t/m^3",
+                                   *rho_read));
   double depth = std::numeric_limits<double>::infinity();
   if (const YAML::Node d = w.get("depth", Need::kRequired, "the water depth in m, or infinite");
       d.IsDefined()) {
