@@ -235,6 +235,32 @@ class Cli(unittest.TestCase):
         for row in rows:  # every kept row is finite
             self.assertTrue(all(abs(x) < 1e300 for x in row))
 
+    def test_newton_failure_names_time_coordinate_and_cause(self):
+        # a weight falls 1 m onto a slack rope that stiffens to 1e8 N/m: with fixed 0.1 s
+        # steps generalized-alpha's Newton cannot follow the snap (the adaptive control can,
+        # tests/verification/test_implicit_integration.cpp)
+        path = self.model("""
+environment: {gravity: 9.81}
+bodies:
+  weight: {type: rigid_body, mass: 1000, inertia: [100, 100, 100], position: [0, 0, -9]}
+connections:
+  - {name: rope, type: spring, from: {body: ground, position: [0, 0, 0]},
+     to: {body: weight, position: [0, 0, 0]}, free_length: 10, slack: true, damping: 2.0e4,
+     tension_table: [[0, 0], [0.01, 1.0e4], [0.02, 1.0e5], [0.03, 1.0e6], [0.04, 1.0e7], [0.05, 1.0e8]]}
+dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_interval: 0.1}
+""")
+        out = os.path.join(self.dir, "out")
+        r = run("run", path, "-o", out)
+        self.assertEqual(r.returncode, 3, r.stderr)
+        t_fail = float(r.stderr.split("t = ")[1].split(" s")[0])
+        self.assertGreater(t_fail, 0.4)  # the free fall of 1 m takes 0.45 s
+        self.assertLess(t_fail, 1.0)
+        self.assertIn("generalized_alpha step failed: Newton", r.stderr)
+        self.assertIn("at weight.z", r.stderr)  # the coordinate that moves
+        self.assertIn("try step_control: adaptive or a shorter time_step", r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        self.assertAlmostEqual(rows[-1][0], round(t_fail - 0.1, 6), places=6)  # every step before it
+
     def test_statics_of_a_body_hanging_on_a_ball_joint(self):
         out = os.path.join(self.dir, "out")
         r = run("statics", self.model(HANGING), "-o", out)

@@ -155,12 +155,18 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     report.message = std::move(message);
     return report;
   };
+  Index worst = 0;  // the coordinate of the largest component of the last update
+  // what is likely wrong when Newton fails, for the user
+  const char* cause =
+      "the time step is too long for the motion (a sudden load, a line going slack or taut, "
+      "an impact) or a stiffness changes abruptly; try step_control: adaptive or a shorter "
+      "time_step";
   for (int it = 1;; ++it) {
     if (it > s_.max_iterations)
       return fail(
           fmt::format("Newton did not converge in {} iterations (step {:g} s; last "
-                      "update {:.3g} m against a tolerance of {:.3g} m)",
-                      s_.max_iterations, h, previous, tol));
+                      "update {:.3g} m against a tolerance of {:.3g} m, largest at {}): {}",
+                      s_.max_iterations, h, previous, tol, dae.coordinate_name(worst), cause));
     ++report.iterations;
     ++stats_.iterations;
     update_iterate(state, h);
@@ -197,13 +203,19 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       rhs_.tail(m_) = -eval_.C;
     }
     instrumented::solve(newton_solver_, rhs_, sol_, stats_);
-    if (!sol_.allFinite())
-      return fail(
-          "the Newton update is not finite: NaN/Inf in the forces, or a nearly singular "
-          "Newton matrix");
+    if (!sol_.allFinite()) {
+      Index bad = 0;
+      while (bad < n_ && std::isfinite(eval_.Q[bad])) ++bad;
+      return fail(bad < n_ ? fmt::format("the force on {} is not finite (NaN/Inf): an element "
+                                         "or load cannot be evaluated at this iterate; {}",
+                                         dae.coordinate_name(bad), cause)
+                           : std::string("the Newton update is not finite: a nearly singular "
+                                         "Newton matrix (a mechanism or a body without "
+                                         "supports)"));
+    }
     a_ += bp * sol_.head(n_);
     trial_.lambda += bp * sol_.tail(m_);
-    const double norm = sol_.head(n_).lpNorm<Eigen::Infinity>();
+    const double norm = n_ > 0 ? sol_.head(n_).cwiseAbs().maxCoeff(&worst) : 0.0;
     // convergence (Hairer & Wanner, Solving ODEs II, sec. IV.8): the error left after an
     // update dq is about theta/(1 - theta) |dq| with the contraction rate theta. A matrix
     // from an earlier step contracts unevenly (the first update removes the predictor's
@@ -238,8 +250,8 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       if (diverging >= 2)
         return fail(
             fmt::format("Newton diverges (updates grow by {:.3g} with a fresh "
-                        "Jacobian; step {:g} s)",
-                        theta, h));
+                        "Jacobian; step {:g} s; largest update at {}): {}",
+                        theta, h, dae.coordinate_name(worst), cause));
     }
     if (converged) break;
     previous = norm;
