@@ -1,5 +1,6 @@
-// seaflex command line: check, statics, run, modes. Exit codes: 0 success, 2 input or
-// usage error, 3 solver failure (results up to the failure stay on disk).
+// seaflex command line: check, statics, run, modes, bench, plot. Exit codes: 0 success, 2
+// input or usage error, 3 solver failure (results up to the failure stay on disk), 130/143
+// a run stopped by SIGINT/SIGTERM after its current step (results up to it stay on disk).
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
@@ -10,6 +11,7 @@
 
 #include "plot_command.hpp"
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/interrupt.hpp"
 #include "seaflex/core/parallel.hpp"
 #include "seaflex/io/csv_recorder.hpp"
 #include "seaflex/io/model_loader.hpp"
@@ -209,6 +211,11 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
     std::fprintf(stderr, "seaflex: results up to the failure are in %s\n",
                  (dir / "timeseries.csv").c_str());
     throw;
+  } catch (const Interrupted&) {
+    progress.done();
+    std::fprintf(stderr, "seaflex: results up to the interruption are in %s\n",
+                 (dir / "timeseries.csv").c_str());
+    throw;
   }
   return 0;
 }
@@ -353,6 +360,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (threads > 0) set_threads(threads);
+    install_interrupt_handlers();  // SIGINT/SIGTERM end a run after its current step
     if (*check) return cmd_check(file);
     if (*statics) return cmd_statics(file, dir, quiet);
     if (*run) return cmd_run(file, dir, quiet);
@@ -368,6 +376,9 @@ int main(int argc, char** argv) {
   } catch (const SolverError& e) {
     std::fprintf(stderr, "seaflex: solver failure: %s\n", e.what());
     return kExitSolver;
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "seaflex: %s\n", e.what());
+    return 128 + e.signal();  // the shell's convention for a death by that signal
   } catch (const std::exception& e) {
     std::fprintf(stderr, "seaflex: error: %s\n", e.what());
     return kExitInput;

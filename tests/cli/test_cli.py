@@ -9,9 +9,11 @@ import csv
 import math
 import os
 import re
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 SEAFLEX = sys.argv[1] if len(sys.argv) > 1 else "build/seaflex"
@@ -260,6 +262,46 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         self.assertIn("try step_control: adaptive or a shorter time_step", r.stderr)
         header, rows = read_csv(os.path.join(out, "timeseries.csv"))
         self.assertAlmostEqual(rows[-1][0], round(t_fail - 0.1, 6), places=6)  # every step before it
+
+    def test_signals_stop_a_run_after_a_step_and_keep_its_rows(self):
+        # the barge example made long: SIGINT and SIGTERM end it after the current step,
+        # with exit code 128 + signal and every output row up to then complete on disk
+        with open(os.path.join(EXAMPLES, "barge_riser.yaml")) as f:
+            text = f.read().replace("duration: 100 ", "duration: 100000 ")
+        path = self.model(text)
+        for sig, code, name in ((signal.SIGINT, 130, "SIGINT"), (signal.SIGTERM, 143, "SIGTERM")):
+            out = os.path.join(self.dir, name)
+            p = subprocess.Popen([SEAFLEX, "run", path, "-o", out, "-q"],
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            csv_path = os.path.join(out, "timeseries.csv")
+            deadline = time.time() + 60
+            while time.time() < deadline and (not os.path.exists(csv_path)
+                                               or os.path.getsize(csv_path) < 20000):
+                time.sleep(0.05)
+            p.send_signal(sig)
+            _, err = p.communicate(timeout=60)
+            self.assertEqual(p.returncode, code, err)
+            self.assertIn("seaflex: interrupted by %s after the step to t = " % name, err)
+            self.assertIn("results up to the interruption are in", err)
+            t_stop = float(err.split("after the step to t = ")[1].split(" s")[0])
+            header, rows = read_csv(csv_path)
+            times = [row[0] for row in rows]
+            self.assertEqual(times, [0.5 * k for k in range(len(times))])  # no gap, no torn row
+            self.assertTrue(all(len(row) == len(header) for row in rows))
+            self.assertLessEqual(times[-1], t_stop)
+            self.assertGreater(times[-1], t_stop - 0.5 - 1e-9)
+            self.assertLess(t_stop, 100000.0)
+
+    def test_repeated_runs_are_byte_identical(self):
+        outs = []
+        for k in range(2):
+            out = os.path.join(self.dir, "rep%d" % k)
+            r = run("run", os.path.join(EXAMPLES, "barge_riser.yaml"), "-o", out, "-q")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            outs.append(out)
+        for name in ("statics.csv", "timeseries.csv"):
+            with open(os.path.join(outs[0], name), "rb") as a, open(os.path.join(outs[1], name), "rb") as b:
+                self.assertEqual(a.read(), b.read(), name)
 
     def test_statics_of_a_body_hanging_on_a_ball_joint(self):
         out = os.path.join(self.dir, "out")

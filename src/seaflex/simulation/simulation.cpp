@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/interrupt.hpp"
 
 namespace seaflex {
 
@@ -114,6 +115,9 @@ SimulationReport Simulation::run(State& state) {
         record(state);
         if (progress_) progress_(state.t - t0, settings_.duration);
       }
+      // SIGINT/SIGTERM: stop after the completed step (the catch below flushes)
+      if (const int sig = interrupt_signal(); sig != 0 && ticks < total)
+        throw Interrupted(sig, state.t);
     }
   } catch (...) {
     for (Recorder* r : recorders_) r->flush();

@@ -1,6 +1,7 @@
 // The time loop: steps an integrator, feeds recorders at the output interval, checks every
 // step for NaN/Inf and divergence, and on failure flushes the recorders before throwing,
-// so results up to the failure stay on disk.
+// so results up to the failure stay on disk. After a SIGINT/SIGTERM (core/interrupt.hpp) it
+// stops at the end of the current step and throws Interrupted, after flushing.
 // Step control: fixed (every step h, reproducible), or adaptive: a failed step (Newton
 // failure, NaN/Inf, runaway) is retried from the saved state with h/2, down to the
 // smallest step; after four accepted steps the step doubles back towards h. Steps are
