@@ -1,0 +1,237 @@
+#!/usr/bin/env python3
+"""End-to-end tests of seaflex's result files (docs/results-format.md): HDF5 holds the
+same numbers as the CSV files, a run killed with SIGKILL leaves a readable HDF5 file with
+every row written before the kill, beam results along the length and their envelopes,
+and the model's output section (format, channels, bodies).
+
+Needs h5py (Debian: python3-h5py).
+
+usage: test_results.py SEAFLEX_EXECUTABLE SOURCE_DIR
+"""
+import csv
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+import h5py
+import numpy as np
+
+SEAFLEX = sys.argv[1] if len(sys.argv) > 1 else "build/seaflex"
+SRC = sys.argv[2] if len(sys.argv) > 2 else "."
+
+
+def run(*args, timeout=300):
+    return subprocess.run([SEAFLEX, *args], capture_output=True, text=True, timeout=timeout)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], np.array([[float(x) for x in r] for r in rows[1:]])
+
+
+# a 60 m riser in water with mud, pinned at the top, pulled at the bottom, in a current:
+# tension, bending and pressures all non-zero
+RISER = """
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 500}
+  current: {speed: 1.0, direction: 0}
+bodies:
+  riser:
+    type: ancf_beam
+    start: [0, 0, -5]
+    end: [0, 0, -65]
+    elements: 45
+    outer_diameter: 0.5
+    inner_diameter: 0.45
+    youngs_modulus: 2.1e11
+    density: 7850
+  buoy: {type: rigid_body, mass: 100, inertia: [10, 10, 10], position: [5, 0, 0]}
+supports:
+  - {body: riser, node: start, type: pinned}
+hydrodynamics:
+  riser: {cd: 1.0, cm: 2.0, contents_density: 1200}
+loads:
+  - {type: point_force, body: riser, node: end, force: [0, 0, -1.0e5]}
+dynamics:
+  integrator: generalized_alpha
+  time_step: 0.05
+  step_control: adaptive
+  duration: DURATION
+  output_interval: 0.1
+"""
+
+
+class Results(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def model(self, text, name="model.yaml"):
+        path = os.path.join(self.dir, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_hdf5_holds_the_csv_numbers(self):
+        out = os.path.join(self.dir, "out")
+        r = run("run", self.model(RISER.replace("DURATION", "2.0")), "-o", out, "-q",
+                "--format", "both")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            self.assertEqual(f.attrs["format"], "seaflex results 1")
+            names = [n.decode() for n in f["channel_names"][:]]
+            self.assertEqual(["time"] + names, header)
+            # 21 rows: t = 0, 0.1, ..., 2.0
+            self.assertEqual(f["time"].shape, (21,))
+            self.assertEqual(f["channels"].shape, (21, len(names)))
+            # the CSV prints 17 significant digits, which round-trip doubles: equal bits
+            np.testing.assert_array_equal(f["time"][:], rows[:, 0])
+            np.testing.assert_array_equal(f["channels"][:], rows[:, 1:])
+            # positions: time x node x 3, the same numbers as the node channels
+            pos = f["beams/riser/positions"][:]
+            self.assertEqual(pos.shape, (21, 46, 3))
+            for k in range(46):
+                for c, axis in enumerate("xyz"):
+                    np.testing.assert_array_equal(pos[:, k, c],
+                                                  rows[:, header.index(f"riser.n{k}.{axis}")])
+            self.assertEqual(f["beams/riser/positions"].compression, "gzip")
+            # beam results: per quantity time x station, against riser.along.csv
+            s = f["beams/riser/stations/s"][:]
+            self.assertEqual(len(s), 3 * 45 + 1)  # 46 nodes, 2 Gauss points per element
+            along_header, along = read_csv(os.path.join(out, "riser.along.csv"))
+            self.assertEqual(along_header[:3], ["time", "station", "s"])
+            self.assertEqual(along.shape[0], 21 * 136)
+            for q in along_header[3:]:
+                np.testing.assert_array_equal(f[f"beams/riser/results/{q}"][:].ravel(),
+                                              along[:, along_header.index(q)], q)
+            self.assertEqual(f["beams/riser/results/tension_effective"].attrs["units"], "N")
+            # envelopes: min, max, mean over the 21 rows, as riser.envelope.csv
+            env_header, env = read_csv(os.path.join(out, "riser.envelope.csv"))
+            self.assertEqual(env.shape[0], 136)
+            T = f["beams/riser/results/tension_effective"][:]
+            np.testing.assert_array_equal(f["beams/riser/envelope/max/tension_effective"][:],
+                                          T.max(axis=0))
+            np.testing.assert_array_equal(f["beams/riser/envelope/min/tension_effective"][:],
+                                          T.min(axis=0))
+            # the mean is summed in another order than numpy's: 1e-12 relative
+            np.testing.assert_allclose(f["beams/riser/envelope/mean/tension_effective"][:],
+                                       T.mean(axis=0), rtol=1e-12)
+            for part in ("min", "max", "mean"):
+                np.testing.assert_array_equal(
+                    f[f"beams/riser/envelope/{part}/moment"][:],
+                    env[:, env_header.index(f"moment.{part}")])
+
+    def test_killed_run_leaves_a_readable_hdf5_file(self):
+        out = os.path.join(self.dir, "killed")
+        model = self.model(RISER.replace("DURATION", "10000"), "long.yaml")
+        proc = subprocess.Popen([SEAFLEX, "run", model, "-o", out, "-q", "--format", "both"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        csv_path = os.path.join(out, "timeseries.csv")
+        deadline = time.time() + 60
+        try:
+            # wait for 30 rows in the CSV, which is written row by row like the HDF5 file
+            while time.time() < deadline:
+                if os.path.exists(csv_path):
+                    with open(csv_path) as f:
+                        if sum(1 for _ in f) > 30:
+                            break
+                time.sleep(0.05)
+            self.assertIsNone(proc.poll(), "the run ended before it was killed")
+            proc.send_signal(signal.SIGKILL)
+        finally:
+            proc.wait()
+        self.assertEqual(proc.returncode, -signal.SIGKILL)
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            t = f["time"][:]
+            values = f["channels"][:]
+            T = f["beams/riser/results/tension_effective"][:]
+        n = len(t)
+        self.assertGreaterEqual(n, 30)
+        # consecutive output times 0, 0.1, 0.2, ... (the loop counts ticks: exact to
+        # round-off of k * 0.1)
+        np.testing.assert_allclose(t, 0.1 * np.arange(n), rtol=0, atol=1e-12)
+        self.assertEqual(values.shape[0], n)
+        self.assertEqual(T.shape[0], n)
+        # the same numbers as a complete run of the first rows (runs are deterministic)
+        ref = os.path.join(self.dir, "ref")
+        r = run("run", self.model(RISER.replace("DURATION", f"{0.1 * (n - 1):.1f}"), "short.yaml"),
+                "-o", ref, "-q", "--format", "hdf5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(ref, "timeseries.csv")))
+        with h5py.File(os.path.join(ref, "timeseries.h5"), "r") as f:
+            np.testing.assert_array_equal(f["channels"][:], values)
+            np.testing.assert_array_equal(f["beams/riser/results/tension_effective"][:], T)
+
+    def test_output_section_selects_format_channels_and_bodies(self):
+        text = RISER.replace("DURATION", "0.2") + """
+output:
+  format: hdf5
+  channels: ["riser.n45.*", "buoy.z"]
+  bodies: [riser, buoy]
+  beam_results: envelope
+"""
+        out = os.path.join(self.dir, "sel")
+        os.makedirs(out)
+        stale = os.path.join(out, "riser.along.csv")
+        with open(stale, "w") as f:
+            f.write("from an earlier run\n")
+        r = run("run", self.model(text), "-o", out, "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("timeseries.h5", r.stdout)
+        self.assertFalse(os.path.exists(os.path.join(out, "timeseries.csv")))
+        self.assertFalse(os.path.exists(stale))  # earlier results are removed first
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            names = [n.decode() for n in f["channel_names"][:]]
+            self.assertEqual(names, ["riser.n45.x", "riser.n45.y", "riser.n45.z", "buoy.z"])
+            self.assertNotIn("results", f["beams/riser"])  # envelope only
+            self.assertEqual(f["beams/riser/envelope"].attrs["rows"], 3)
+        # --format overrides the model
+        r = run("run", self.model(text), "-o", out, "-q", "--format", "csv")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        self.assertEqual(header, ["time", "riser.n45.x", "riser.n45.y", "riser.n45.z", "buoy.z"])
+        self.assertFalse(os.path.exists(os.path.join(out, "timeseries.h5")))
+        self.assertFalse(os.path.exists(os.path.join(out, "riser.along.csv")))
+        self.assertTrue(os.path.exists(os.path.join(out, "riser.envelope.csv")))
+
+    def test_statics_in_hdf5(self):
+        out = os.path.join(self.dir, "st")
+        # without the free buoy, which has no static equilibrium
+        text = "\n".join(l for l in RISER.replace("DURATION", "1").splitlines()
+                         if not l.strip().startswith("buoy:"))
+        r = run("statics", self.model(text), "-o", out, "-q", "--format", "both")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "statics.csv"))
+        along_header, along = read_csv(os.path.join(out, "statics.riser.along.csv"))
+        with h5py.File(os.path.join(out, "statics.h5"), "r") as f:
+            np.testing.assert_array_equal(f["channels"][:], rows[:, 1:])
+            np.testing.assert_array_equal(f["beams/riser/results/moment"][0],
+                                          along[:, along_header.index("moment")])
+            # the effective tension at the top carries the pull (1e5 N) and the submerged
+            # weight (steel + mud - buoyancy) of the 60 m below; the current's drag (15 kN
+            # sideways) adds 0.2 %: 1 % asked
+            w_sub = (7850 * np.pi / 4 * (0.25 - 0.2025) + 1200 * np.pi / 4 * 0.2025
+                     - 1025 * np.pi / 4 * 0.25) * 9.81
+            T_top = f["beams/riser/results/tension_effective"][0, 0]
+            self.assertAlmostEqual(T_top / (1e5 + 60 * w_sub), 1.0, delta=0.01)
+        self.assertFalse(os.path.exists(os.path.join(out, "statics.riser.envelope.csv")))
+
+    def test_bad_format_option(self):
+        r = run("run", self.model(RISER.replace("DURATION", "1")), "-o", self.dir,
+                "--format", "xml")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--format", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
