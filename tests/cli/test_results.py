@@ -104,7 +104,9 @@ class Results(unittest.TestCase):
                 for c, axis in enumerate("xyz"):
                     np.testing.assert_array_equal(pos[:, k, c],
                                                   rows[:, header.index(f"riser.n{k}.{axis}")])
-            self.assertEqual(f["beams/riser/positions"].compression, "gzip")
+            # rows under 16 KiB: uncompressed chunks of several rows (rewritten in place)
+            self.assertIsNone(f["beams/riser/positions"].compression)
+            self.assertEqual(f["beams/riser/positions"].chunks, (14, 46, 3))
             # beam results: per quantity time x station, against riser.along.csv
             s = f["beams/riser/stations/s"][:]
             self.assertEqual(len(s), 3 * 45 + 1)  # 46 nodes, 2 Gauss points per element
@@ -225,6 +227,32 @@ output:
             T_top = f["beams/riser/results/tension_effective"][0, 0]
             self.assertAlmostEqual(T_top / (1e5 + 60 * w_sub), 1.0, delta=0.01)
         self.assertFalse(os.path.exists(os.path.join(out, "statics.riser.envelope.csv")))
+
+    def test_large_rows_are_compressed(self):
+        # a 1000-element beam: rows of 3001 stations (24 KiB) are compressed chunks of one row
+        text = """
+environment: {gravity: 9.81}
+bodies:
+  beam: {type: ancf_beam, start: [0, 0, 0], end: [10, 0, 0], elements: 1000, area: 0.01,
+         second_moment: 8.33e-6, youngs_modulus: 210e9, density: 7850}
+supports:
+  - {body: beam, node: start, type: clamped}
+"""
+        out = os.path.join(self.dir, "big")
+        r = run("statics", self.model(text), "-o", out, "-q", "--format", "hdf5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with h5py.File(os.path.join(out, "statics.h5"), "r") as f:
+            for name, chunks in (("beams/beam/positions", (1, 1001, 3)),
+                                 ("beams/beam/results/moment", (1, 3001)),
+                                 ("channels", (1, 3003))):
+                self.assertEqual(f[name].compression, "gzip", name)
+                self.assertEqual(f[name].chunks, chunks, name)
+            self.assertIsNone(f["time"].compression)
+            # the cantilever under its own weight: moment w L^2 / 2 at the root to 1 % (the
+            # tip sags 5 % of L, which shortens the lever arms by about 0.3 %)
+            w = 7850 * 0.01 * 9.81
+            self.assertAlmostEqual(f["beams/beam/results/moment"][0, 0] / (w * 10**2 / 2), 1.0,
+                                   delta=0.01)
 
     def test_bad_format_option(self):
         r = run("run", self.model(RISER.replace("DURATION", "1")), "-o", self.dir,

@@ -19,9 +19,11 @@ namespace {
 // file. So no file space is ever reused (file space strategy NONE), rows of at least
 // kCompressMinBytes are one compressed chunk each (written once, never rewritten), and
 // smaller rows go uncompressed into multi-row chunks, which are rewritten in place.
-constexpr hsize_t kCompressMinBytes = 1024;
-// deflate level: 4 packs results about as well as 9 at a fraction of the time
-constexpr unsigned kDeflateLevel = 4;
+// Below 16 KiB a row compresses poorly and zlib's set-up per chunk costs more than the
+// compression (measured: a third of the run time of bench/riser/riser_n100.yaml at 1 KiB).
+constexpr hsize_t kCompressMinBytes = 16 * 1024;
+// deflate level 1: double-precision results pack hardly better at higher levels
+constexpr unsigned kDeflateLevel = 1;
 // an uncompressed chunk holds about this many bytes
 constexpr hsize_t kChunkBytes = 16 * 1024;
 constexpr hsize_t kMaxChunkRows = 1024;

@@ -1,8 +1,9 @@
 // Results in one HDF5 file (HDF5 C API): the channels of the CSV time series, the node
 // positions of every output beam (time x node x 3), its results along the length (time x
 // station per quantity, post/beam_results.hpp) and their envelopes. Every dataset that
-// grows in time is chunked and deflate-compressed; each output row extends them and ends
-// with H5Fflush, so a run that is killed leaves a file holding every row written before.
+// grows in time is chunked (rows of 16 KiB or more deflate-compressed, one per chunk);
+// each output row extends them and ends with H5Fflush, and file space is never reused,
+// so a run that is killed leaves a readable file holding every row written before.
 // Layout: docs/results-format.md.
 #pragma once
 
