@@ -16,6 +16,7 @@
 #include "seaflex/io/hdf5_recorder.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/output_selection.hpp"
+#include "seaflex/io/vtk_recorder.hpp"
 #include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/modal.hpp"
 #include "seaflex/solvers/statics.hpp"
@@ -99,6 +100,10 @@ class Outputs {
                                                per_row, envelope);
       files_.push_back(dir / fmt::format("{}.h5", stem));
     }
+    if (out.vtk)
+      vtk_ =
+          std::make_unique<io::VtkRecorder>(dir, stem, beam_results(), io::output_plates(model),
+                                            io::output_rigid_bodies(model), io::sea_surface(model));
   }
   void attach(Simulation& sim) {
     for (Recorder* r : recorders()) sim.add_recorder(*r);
@@ -139,13 +144,14 @@ class Outputs {
     std::vector<Recorder*> list;
     for (Recorder* r :
          {static_cast<Recorder*>(csv_.get()), static_cast<Recorder*>(beams_csv_.get()),
-          static_cast<Recorder*>(h5_.get())})
+          static_cast<Recorder*>(h5_.get()), static_cast<Recorder*>(vtk_.get())})
       if (r) list.push_back(r);
     return list;
   }
   std::unique_ptr<io::CsvRecorder> csv_;
   std::unique_ptr<io::BeamCsvRecorder> beams_csv_;
   std::unique_ptr<io::Hdf5Recorder> h5_;
+  std::unique_ptr<io::VtkRecorder> vtk_;
   std::vector<fs::path> files_;
 };
 
@@ -163,11 +169,16 @@ void clear_results(const io::Model& model, const fs::path& dir) {
     for (const auto& f : io::BeamCsvRecorder::files(dir, prefix, beams)) files.push_back(f);
   std::error_code ec;
   for (const auto& f : files) fs::remove(f, ec);
+  for (const char* stem : {"statics", "statics_partial", "timeseries"}) {
+    fs::remove(dir / fmt::format("{}.pvd", stem), ec);
+    fs::remove_all(dir / "vtk" / stem, ec);
+  }
 }
 
 // command-line options that override the model's output section
 struct OutputOptions {
   std::string format;  // csv, hdf5, both; empty: the model's output.format
+  bool vtk = false;    // ParaView time series, also without output.vtk
 };
 
 // loads the model and prints its warnings (they do not stop the run)
@@ -177,6 +188,7 @@ io::Model load_model(const std::string& file, const OutputOptions& options = {})
   if (options.format == "csv") model.output.format = io::OutputFormat::kCsv;
   if (options.format == "hdf5") model.output.format = io::OutputFormat::kHdf5;
   if (options.format == "both") model.output.format = io::OutputFormat::kBoth;
+  if (options.vtk) model.output.vtk = true;
   return model;
 }
 
@@ -416,6 +428,8 @@ int main(int argc, char** argv) {
                     "result files: csv, hdf5 or both (default: the model's output.format, else "
                     "csv)")
         ->check(CLI::IsMember({"csv", "hdf5", "both"}));
+    cmd->add_flag("--vtk", output_options.vtk,
+                  "also write a ParaView time series (DIR/<stem>.pvd, DIR/vtk/)");
   };
   add_format(statics);
   auto* run = app.add_subcommand("run", "dynamic simulation; writes DIR/timeseries.csv");

@@ -4,7 +4,7 @@ same numbers as the CSV files, a run killed with SIGKILL leaves a readable HDF5 
 every row written before the kill, beam results along the length and their envelopes,
 and the model's output section (format, channels, bodies).
 
-Needs h5py (Debian: python3-h5py).
+Needs h5py and VTK's Python module (Debian: python3-h5py, python3-vtk9).
 
 usage: test_results.py SEAFLEX_EXECUTABLE SOURCE_DIR
 """
@@ -17,8 +17,12 @@ import tempfile
 import time
 import unittest
 
+import xml.etree.ElementTree as ET
+
 import h5py
 import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
 
 SEAFLEX = sys.argv[1] if len(sys.argv) > 1 else "build/seaflex"
 SRC = sys.argv[2] if len(sys.argv) > 2 else "."
@@ -253,6 +257,76 @@ supports:
             w = 7850 * 0.01 * 9.81
             self.assertAlmostEqual(f["beams/beam/results/moment"][0, 0] / (w * 10**2 / 2), 1.0,
                                    delta=0.01)
+
+    def test_paraview_time_series(self):
+        # the riser and the buoy in an Airy wave, and a plate on simply supported edges
+        text = RISER.replace("DURATION", "0.4").replace(
+            "  current: {speed: 1.0, direction: 0}",
+            "  current: {speed: 1.0, direction: 0}\n  waves: {type: airy, height: 2, period: 8}"
+        ).replace("supports:", """  plate: {type: ancf_plate, corner: [20, 0, -1], edge1: [4, 0, 0], edge2: [0, 3, 0],
+          elements: [2, 3], thickness: 0.05, youngs_modulus: 210e9, poisson_ratio: 0.3,
+          density: 7850}
+supports:
+  - {body: plate, type: simply_supported, edges: [i0, i_max, j0, j_max]}""")
+        out = os.path.join(self.dir, "vtk_out")
+        r = run("run", self.model(text), "-o", out, "-q", "--vtk", "--format", "hdf5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        pvd = ET.parse(os.path.join(out, "timeseries.pvd")).getroot()
+        sets = pvd.find("Collection").findall("DataSet")
+        # 5 rows (t = 0 ... 0.4) of 4 parts: beams, plates, rigid bodies, sea surface
+        self.assertEqual(len(sets), 5 * 4)
+        self.assertEqual([d.get("name") for d in sets[:4]], ["riser", "plate", "buoy", "sea_surface"])
+        # the times of the rows (3 * 0.1 s steps: 0.30000000000000004, printed exactly)
+        times = sorted({float(d.get("timestep")) for d in sets})
+        np.testing.assert_allclose(times, [0.0, 0.1, 0.2, 0.3, 0.4], rtol=0, atol=1e-15)
+
+        def read(entry):
+            reader = vtk.vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(out, entry.get("file")))
+            reader.Update()
+            return reader.GetOutput()
+
+        last = {d.get("name"): read(d) for d in sets[-4:]}
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            # the riser: a polyline through its 136 stations with the beam results,
+            # printed with 17 digits: the HDF5 numbers exactly
+            riser = last["riser"]
+            self.assertEqual(riser.GetNumberOfPoints(), 136)
+            self.assertEqual(riser.GetNumberOfLines(), 1)
+            pd = riser.GetPointData()
+            for q in ("tension_effective", "moment", "stress_von_mises"):
+                np.testing.assert_array_equal(vtk_to_numpy(pd.GetArray(q)),
+                                              f[f"beams/riser/results/{q}"][-1], q)
+            np.testing.assert_array_equal(vtk_to_numpy(pd.GetArray("outer_diameter")),
+                                          np.full(136, 0.5))
+            pts = vtk_to_numpy(riser.GetPoints().GetData())
+            np.testing.assert_array_equal(pts[::3], f["beams/riser/positions"][-1])  # the nodes
+            # the buoy: the box of its inertia (10 kg m^2 about each axis, 100 kg): a cube of
+            # side sqrt(6 * 10 / 100), centred on its centre of gravity (round-off: 1e-12 m)
+            buoy = last["buoy"]
+            self.assertEqual((buoy.GetNumberOfPoints(), buoy.GetNumberOfPolys()), (8, 6))
+            corners = vtk_to_numpy(buoy.GetPoints().GetData())
+            names = [n.decode() for n in f["channel_names"][:]]
+            cg = [f["channels"][-1, names.index(f"buoy.{a}")] for a in "xyz"]
+            np.testing.assert_allclose(corners.mean(axis=0), cg, rtol=0, atol=1e-12)
+            np.testing.assert_allclose(np.ptp(corners, axis=0), np.full(3, np.sqrt(0.6)),
+                                       rtol=0, atol=1e-12)
+            # the plate: (2 + 1) x (3 + 1) nodes, 2 x 3 quads
+            plate = last["plate"]
+            self.assertEqual((plate.GetNumberOfPoints(), plate.GetNumberOfPolys()), (12, 6))
+        # the sea surface: a 41 x 41 grid whose z is the elevation of the 2 m Airy wave:
+        # |eta| <= 1 m, and the crest passes x = 0 at t = 0 (eta(0, 0, 0) = 1 m)
+        sea = read(sets[3])
+        self.assertEqual((sea.GetNumberOfPoints(), sea.GetNumberOfPolys()), (41 * 41, 40 * 40))
+        z = vtk_to_numpy(sea.GetPoints().GetData())[:, 2]
+        np.testing.assert_array_equal(z, vtk_to_numpy(sea.GetPointData().GetArray("elevation")))
+        self.assertLessEqual(np.abs(z).max(), 1.0 + 1e-12)
+        self.assertGreater(z.max(), 0.99)
+        # asked for only: no vtk files without --vtk or output.vtk
+        r = run("run", self.model(text), "-o", out, "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(out, "timeseries.pvd")))
+        self.assertFalse(os.path.exists(os.path.join(out, "vtk", "timeseries")))
 
     def test_bad_format_option(self):
         r = run("run", self.model(RISER.replace("DURATION", "1")), "-o", self.dir,

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 #include "seaflex/forces/morison_beam.hpp"
@@ -65,6 +66,53 @@ std::vector<const AncfBeam*> output_beams(const Model& model) {
       beams.push_back(beam);
   }
   return beams;
+}
+
+namespace {
+template <class T>
+std::vector<const T*> output_bodies_of(const Model& model) {
+  std::vector<const T*> list;
+  const auto& listed = model.output.bodies;
+  for (const auto& b : model.system->bodies())
+    if (const auto* body = dynamic_cast<const T*>(b.get()))
+      if (listed.empty() || std::find(listed.begin(), listed.end(), body->name()) != listed.end())
+        list.push_back(body);
+  return list;
+}
+}  // namespace
+
+std::vector<const AncfPlate*> output_plates(const Model& model) {
+  return output_bodies_of<AncfPlate>(model);
+}
+
+std::vector<const RigidBody*> output_rigid_bodies(const Model& model) {
+  return output_bodies_of<RigidBody>(model);
+}
+
+std::optional<VtkSea> sea_surface(const Model& model) {
+  if (!model.ocean) return std::nullopt;
+  // horizontal extent of the initial positions (all coordinates that are positions)
+  Eigen::AlignedBox<double, 2> box;
+  const State s0 = model.system->initial_state();
+  for (const auto& b : model.system->bodies()) {
+    if (const auto* beam = dynamic_cast<const AncfBeam*>(b.get())) {
+      for (int k = 0; k < beam->num_nodes(); ++k) box.extend(s0.q.segment<2>(beam->node_index(k)));
+    } else if (const auto* plate = dynamic_cast<const AncfPlate*>(b.get())) {
+      for (int i = 0; i <= plate->nx(); ++i)
+        for (int j = 0; j <= plate->ny(); ++j) box.extend(s0.q.segment<2>(plate->node_index(i, j)));
+    } else if (const auto* body = dynamic_cast<const RigidBody*>(b.get())) {
+      box.extend(body->position(s0).head<2>());
+    }
+  }
+  if (box.isEmpty()) box.extend(Eigen::Vector2d::Zero());
+  const double margin = std::max(10.0, 0.2 * box.sizes().maxCoeff());
+  VtkSea sea;
+  sea.ocean = model.ocean;
+  sea.x0 = box.min().x() - margin;
+  sea.x1 = box.max().x() + margin;
+  sea.y0 = box.min().y() - margin;
+  sea.y1 = box.max().y() + margin;
+  return sea;
 }
 
 post::PipePressure pipe_pressure(const Model& model, const AncfBeam& beam) {

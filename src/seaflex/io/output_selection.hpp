@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "seaflex/io/model_loader.hpp"
+#include "seaflex/io/vtk_recorder.hpp"
 #include "seaflex/post/beam_results.hpp"
 
 namespace seaflex::io {
@@ -24,6 +25,15 @@ ChannelList output_channels(const Model& model);
 
 /// The ANCF beams whose results are written (output.bodies, or every beam), file order.
 std::vector<const AncfBeam*> output_beams(const Model& model);
+
+/// The plates and rigid bodies whose shapes are drawn (output.bodies, or all), file order.
+std::vector<const AncfPlate*> output_plates(const Model& model);
+std::vector<const RigidBody*> output_rigid_bodies(const Model& model);
+
+/// The sea surface of the ParaView animation: a 41 x 41 grid over the horizontal extent
+/// of the bodies' initial positions, with a margin of 20 % of that extent (at least
+/// 10 m); none when the model has no water.
+std::optional<VtkSea> sea_surface(const Model& model);
 
 /// The pressures on a beam's section from its Morison entry (hydrodynamics.<beam>):
 /// water density and buoyancy diameter (when buoyancy is on), contents density and
