@@ -13,8 +13,12 @@
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/interrupt.hpp"
 #include "seaflex/core/parallel.hpp"
+#include "seaflex/io/beam_csv_recorder.hpp"
 #include "seaflex/io/csv_recorder.hpp"
+#include "seaflex/io/hdf5_recorder.hpp"
 #include "seaflex/io/model_loader.hpp"
+#include "seaflex/io/output_selection.hpp"
+#include "seaflex/io/vtk_recorder.hpp"
 #include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/modal.hpp"
 #include "seaflex/solvers/statics.hpp"
@@ -68,22 +72,125 @@ void make_output_dir(const fs::path& dir) {
         "cannot create the output directory: " + (ec ? ec.message() : "not a directory")}});
 }
 
-void write_single_row(const fs::path& path, const ChannelList& channels, const State& state) {
-  io::CsvRecorder csv(path);
-  std::vector<std::string> names;
-  std::vector<double> values;
-  for (const auto& c : channels) {
-    names.push_back(c.name);
-    values.push_back(c.value(state));
+// The recorders of one output stem ("statics", "timeseries"): CSV and/or HDF5 files of
+// the channels, and the beam results along the length (CSV: <prefix><beam>.along.csv and
+// .envelope.csv; HDF5: inside <stem>.h5).
+class Outputs {
+ public:
+  Outputs(const io::Model& model, const fs::path& dir, const std::string& stem, bool envelopes) {
+    const io::OutputSettings& out = model.output;
+    const bool csv = out.format != io::OutputFormat::kHdf5;
+    const bool h5 = out.format != io::OutputFormat::kCsv;
+    const bool per_row = out.beam_results == io::OutputSettings::BeamResults::kAll;
+    const bool envelope = envelopes && out.beam_results != io::OutputSettings::BeamResults::kNone;
+    const std::string prefix = stem == "timeseries" ? "" : fmt::format("{}.", stem);
+    const auto beam_results = [&] {
+      std::vector<post::BeamResults> list;
+      for (const AncfBeam* b : io::output_beams(model))
+        list.emplace_back(*b, io::pipe_pressure(model, *b), out.beam_gauss_points);
+      return list;
+    };
+    if (csv) {
+      csv_ = std::make_unique<io::CsvRecorder>(dir / fmt::format("{}.csv", stem));
+      files_.push_back(dir / fmt::format("{}.csv", stem));
+      if (per_row || envelope)
+        beams_csv_ =
+            std::make_unique<io::BeamCsvRecorder>(dir, prefix, beam_results(), per_row, envelope);
+    }
+    if (h5) {
+      h5_ = std::make_unique<io::Hdf5Recorder>(dir / fmt::format("{}.h5", stem), beam_results(),
+                                               per_row, envelope);
+      files_.push_back(dir / fmt::format("{}.h5", stem));
+    }
+    if (out.vtk)
+      vtk_ =
+          std::make_unique<io::VtkRecorder>(dir, stem, beam_results(), io::output_plates(model),
+                                            io::output_rigid_bodies(model), io::sea_surface(model));
   }
-  csv.begin(names);
-  csv.record(state.t, values);
+  void attach(Simulation& sim) {
+    for (Recorder* r : recorders()) sim.add_recorder(*r);
+  }
+  /// One row (statics): begin, record, flush.
+  void write_row(const ChannelList& channels, const State& state) {
+    std::vector<std::string> names;
+    std::vector<double> values;
+    for (const auto& c : channels) {
+      names.push_back(c.name);
+      values.push_back(c.value(state));
+    }
+    for (Recorder* r : recorders()) {
+      r->begin(names);
+      r->record(state, values);
+      r->flush();
+    }
+  }
+  /// "DIR/<stem>.csv" (and/or .h5): the files of the channels, for messages.
+  static std::string describe(const io::Model& model, const fs::path& dir,
+                              const std::string& stem) {
+    const auto f = model.output.format;
+    if (f == io::OutputFormat::kBoth)
+      return fmt::format("{} and {}", (dir / fmt::format("{}.csv", stem)).string(),
+                         (dir / fmt::format("{}.h5", stem)).string());
+    return (dir / fmt::format("{}.{}", stem, f == io::OutputFormat::kCsv ? "csv" : "h5")).string();
+  }
+  /// The files of the channels, for messages.
+  std::string names() const {
+    std::string list;
+    for (const auto& f : files_)
+      list += fmt::format("{}{}", list.empty() ? "" : " and ", f.string());
+    return list;
+  }
+
+ private:
+  std::vector<Recorder*> recorders() {
+    std::vector<Recorder*> list;
+    for (Recorder* r :
+         {static_cast<Recorder*>(csv_.get()), static_cast<Recorder*>(beams_csv_.get()),
+          static_cast<Recorder*>(h5_.get()), static_cast<Recorder*>(vtk_.get())})
+      if (r) list.push_back(r);
+    return list;
+  }
+  std::unique_ptr<io::CsvRecorder> csv_;
+  std::unique_ptr<io::BeamCsvRecorder> beams_csv_;
+  std::unique_ptr<io::Hdf5Recorder> h5_;
+  std::unique_ptr<io::VtkRecorder> vtk_;
+  std::vector<fs::path> files_;
+};
+
+// Removes the result files a command may write from the output directory, so that what
+// is there afterwards, failed or not, comes from this command only.
+void clear_results(const io::Model& model, const fs::path& dir) {
+  std::vector<fs::path> files;
+  for (const char* f : {"statics.csv", "statics_partial.csv", "timeseries.csv", "modes.csv",
+                        "statics.h5", "statics_partial.h5", "timeseries.h5"})
+    files.push_back(dir / f);
+  std::vector<const AncfBeam*> beams;
+  for (const auto& b : model.system->bodies())
+    if (const auto* beam = dynamic_cast<const AncfBeam*>(b.get())) beams.push_back(beam);
+  for (const char* prefix : {"", "statics.", "statics_partial."})
+    for (const auto& f : io::BeamCsvRecorder::files(dir, prefix, beams)) files.push_back(f);
+  std::error_code ec;
+  for (const auto& f : files) fs::remove(f, ec);
+  for (const char* stem : {"statics", "statics_partial", "timeseries"}) {
+    fs::remove(dir / fmt::format("{}.pvd", stem), ec);
+    fs::remove_all(dir / "vtk" / stem, ec);
+  }
 }
 
+// command-line options that override the model's output section
+struct OutputOptions {
+  std::string format;  // csv, hdf5, both; empty: the model's output.format
+  bool vtk = false;    // ParaView time series, also without output.vtk
+};
+
 // loads the model and prints its warnings (they do not stop the run)
-io::Model load_model(const std::string& file) {
+io::Model load_model(const std::string& file, const OutputOptions& options = {}) {
   io::Model model = io::load_model_file(file);
   for (const auto& w : model.warnings) fmt::print(stderr, "warning: {}\n", w);
+  if (options.format == "csv") model.output.format = io::OutputFormat::kCsv;
+  if (options.format == "hdf5") model.output.format = io::OutputFormat::kHdf5;
+  if (options.format == "both") model.output.format = io::OutputFormat::kBoth;
+  if (options.vtk) model.output.vtk = true;
   return model;
 }
 
@@ -130,7 +237,7 @@ void print_summary(const io::Model& model) {
 }
 
 // statics with a report on stdout; on failure the last converged state goes to
-// statics_partial.csv before the error propagates
+// statics_partial.csv (.h5) before the error propagates
 State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   State state = model.system->initial_state();
   try {
@@ -147,12 +254,14 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
         "constraint violation {:.2e}\n",
         rep.increments, rep.iterations, rep.residual, rep.constraint_violation);
   } catch (const SolverError&) {
-    write_single_row(dir / "statics_partial.csv", io::model_channels(model), state);
+    Outputs partial(model, dir, "statics_partial", false);
+    partial.write_row(io::output_channels(model), state);
     std::fprintf(stderr, "seaflex: the last converged statics increment is in %s\n",
-                 (dir / "statics_partial.csv").c_str());
+                 partial.names().c_str());
     throw;
   }
-  write_single_row(dir / "statics.csv", io::model_channels(model), state);
+  Outputs outputs(model, dir, "statics", false);
+  outputs.write_row(io::output_channels(model), state);
   return state;
 }
 
@@ -163,28 +272,32 @@ int cmd_check(const std::string& file) {
   return 0;
 }
 
-int cmd_statics(const std::string& file, const fs::path& dir, bool quiet) {
-  const io::Model model = load_model(file);
+int cmd_statics(const std::string& file, const fs::path& dir, bool quiet,
+                const OutputOptions& options) {
+  const io::Model model = load_model(file, options);
   make_output_dir(dir);
+  clear_results(model, dir);
   run_statics(model, dir, quiet);
-  fmt::print("wrote {}\n", (dir / "statics.csv").string());
+  fmt::print("wrote {}\n", Outputs::describe(model, dir, "statics"));
   return 0;
 }
 
-int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
-  const io::Model model = load_model(file);
+int cmd_run(const std::string& file, const fs::path& dir, bool quiet,
+            const OutputOptions& options) {
+  const io::Model model = load_model(file, options);
   if (!model.dynamics)
     throw InputError({Diagnostic{file, 0, 0, "dynamics",
                                  "'seaflex run' needs a dynamics section (time_step, duration); "
                                  "see docs/model-format.md"}});
   make_output_dir(dir);
+  clear_results(model, dir);
   const auto& d = *model.dynamics;
   State state =
       d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
   auto integrator = d.make_integrator();
-  Simulation sim(*model.system, io::model_channels(model), *integrator, d.simulation());
-  io::CsvRecorder csv(dir / "timeseries.csv");
-  sim.add_recorder(csv);
+  Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
+  Outputs outputs(model, dir, "timeseries", true);
+  outputs.attach(sim);
   ProgressLine progress(quiet);
   sim.set_progress([&](double t, double T) { progress.update(t, T); });
   try {
@@ -205,11 +318,10 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet) {
           "constraint violation {:.2e}\n",
           rep.steps, d.time_step, rep.end_time, progress.elapsed(), thread_note, rep.rows,
           rep.max_constraint_violation);
-    fmt::print("wrote {}\n", (dir / "timeseries.csv").string());
+    fmt::print("wrote {}\n", Outputs::describe(model, dir, "timeseries"));
   } catch (const SolverError&) {
     progress.done();
-    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n",
-                 (dir / "timeseries.csv").c_str());
+    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", outputs.names().c_str());
     throw;
   } catch (const Interrupted&) {
     progress.done();
@@ -224,6 +336,7 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
               bool quiet) {
   const io::Model model = load_model(file);
   make_output_dir(dir);
+  clear_results(model, dir);
   const State state =
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
   const ModalResult modes = solve_modes(*model.system, state, count);
@@ -316,11 +429,22 @@ int main(int argc, char** argv) {
   statics->add_option("-o,--output", dir, "output directory")->capture_default_str();
   statics->add_flag("-q,--quiet", quiet, "no progress messages");
   add_threads(statics);
+  OutputOptions output_options;
+  const auto add_format = [&](CLI::App* cmd) {
+    cmd->add_option("--format", output_options.format,
+                    "result files: csv, hdf5 or both (default: the model's output.format, else "
+                    "csv)")
+        ->check(CLI::IsMember({"csv", "hdf5", "both"}));
+    cmd->add_flag("--vtk", output_options.vtk,
+                  "also write a ParaView time series (DIR/<stem>.pvd, DIR/vtk/)");
+  };
+  add_format(statics);
   auto* run = app.add_subcommand("run", "dynamic simulation; writes DIR/timeseries.csv");
   run->add_option("MODEL", file, "model file (YAML)")->required();
   run->add_option("-o,--output", dir, "output directory")->capture_default_str();
   run->add_flag("-q,--quiet", quiet, "no progress line");
   add_threads(run);
+  add_format(run);
   auto* modes = app.add_subcommand(
       "modes", "natural frequencies about static equilibrium; writes DIR/modes.csv");
   modes->add_option("MODEL", file, "model file (YAML)")->required();
@@ -362,8 +486,8 @@ int main(int argc, char** argv) {
     if (threads > 0) set_threads(threads);
     install_interrupt_handlers();  // SIGINT/SIGTERM end a run after its current step
     if (*check) return cmd_check(file);
-    if (*statics) return cmd_statics(file, dir, quiet);
-    if (*run) return cmd_run(file, dir, quiet);
+    if (*statics) return cmd_statics(file, dir, quiet, output_options);
+    if (*run) return cmd_run(file, dir, quiet, output_options);
     if (*modes) return cmd_modes(file, dir, count, about_initial, quiet);
     if (*bench) return cmd_bench(file, bench_duration);
     if (*plot) return cli::cmd_plot(plot_dir, plot_channels, plot_out);

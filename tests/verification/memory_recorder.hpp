@@ -13,8 +13,8 @@ namespace seaflex::testing {
 class MemoryRecorder : public Recorder {
  public:
   void begin(const std::vector<std::string>& names) override { names_ = names; }
-  void record(double t, std::span<const double> row) override {
-    times.push_back(t);
+  void record(const State& state, std::span<const double> row) override {
+    times.push_back(state.t);
     rows.emplace_back(row.begin(), row.end());
   }
   void flush() override {}

@@ -30,10 +30,10 @@ void CsvRecorder::begin(const std::vector<std::string>& channels) {
   std::fflush(file_);
 }
 
-void CsvRecorder::record(double t, std::span<const double> values) {
+void CsvRecorder::record(const State& state, std::span<const double> values) {
   line_.clear();
   // 17 significant digits round-trip doubles exactly: results compare bit for bit
-  fmt::format_to(std::back_inserter(line_), "{:.17g}", t);
+  fmt::format_to(std::back_inserter(line_), "{:.17g}", state.t);
   for (double v : values) fmt::format_to(std::back_inserter(line_), ",{:.17g}", v);
   line_ += '\n';
   if (std::fputs(line_.c_str(), file_) < 0 || std::fflush(file_) != 0)

@@ -19,7 +19,7 @@ class CsvRecorder : public Recorder {
   CsvRecorder& operator=(const CsvRecorder&) = delete;
 
   void begin(const std::vector<std::string>& channels) override;
-  void record(double t, std::span<const double> values) override;
+  void record(const State& state, std::span<const double> values) override;
   void flush() override;
 
  private:

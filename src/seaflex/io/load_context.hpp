@@ -42,6 +42,8 @@ struct LoadContext {
   /// initial geometry (a cylinder's reference length, a rope's free length from its
   /// initial tension) and checks of it; they report problems to diag
   std::vector<std::function<void(const State& s0)>> at_start;
+  /// where each output.channels pattern was given (mark, key path), in order
+  std::vector<std::pair<YAML::Mark, std::string>> output_patterns;
 
   /// Reads the body name at key: a body of the model, or ground (nullptr with *ground set)
   /// when allow_ground. Reports a dangling reference with a suggestion.
@@ -130,6 +132,10 @@ void load_bem(MapReader& bem, const RigidBody& body, HydroMatrixSet& set, LoadCo
 /// the hydrodynamics section (load_ocean.cpp)
 void load_hydrodynamics(const YAML::Node& node, LoadContext& ctx);
 void load_dynamics(const YAML::Node& node, LoadContext& ctx);
+/// the output section (load_output.cpp); check_output, once the system is finalized,
+/// reports channel patterns that match no channel
+void load_output(const YAML::Node& node, LoadContext& ctx);
+void check_output(LoadContext& ctx);
 
 /// keys of a registry, for messages
 template <class Map>

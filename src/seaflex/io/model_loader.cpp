@@ -180,7 +180,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();
@@ -217,6 +217,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   }
   if (const YAML::Node n = top.get("statics"); n.IsDefined()) load_statics(n, ctx);
   if (const YAML::Node n = top.get("dynamics"); n.IsDefined()) load_dynamics(n, ctx);
+  if (const YAML::Node n = top.get("output"); n.IsDefined()) load_output(n, ctx);
   top.finish();
   diag.throw_if_any();
   model.system->finalize();
@@ -224,6 +225,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   check_springs(ctx);
   const State s0 = model.system->initial_state();
   for (const auto& f : ctx.at_start) f(s0);
+  check_output(ctx);
   diag.throw_if_any();
   return model;
 }

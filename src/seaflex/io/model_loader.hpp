@@ -36,6 +36,24 @@ struct DynamicsSettings {
   }
 };
 
+/// Which files `run` and `statics` write (docs/results-format.md).
+enum class OutputFormat { kCsv, kHdf5, kBoth };
+
+/// The model's `output` section (docs/model-format.md section 14).
+struct OutputSettings {
+  OutputFormat format = OutputFormat::kCsv;
+  /// Channel name patterns (`*` any characters, `?` one); empty: every channel.
+  std::vector<std::string> channels;
+  /// Bodies whose channels, beam results and positions are written; empty: every body.
+  std::vector<std::string> bodies;
+  /// Beam results along the length: per output row and envelopes, or envelopes only.
+  enum class BeamResults { kAll, kEnvelope, kNone } beam_results = BeamResults::kAll;
+  /// Result stations per element between the nodes (Gauss-Legendre points).
+  int beam_gauss_points = 2;
+  /// ParaView time series (vtk/ directory).
+  bool vtk = false;
+};
+
 struct Model {
   std::string file;
   std::string title;
@@ -49,6 +67,7 @@ struct Model {
   std::vector<std::pair<std::string, Vec3>> wave_probes;
   StaticsSettings statics;
   std::optional<DynamicsSettings> dynamics;
+  OutputSettings output;
 };
 
 /// The system's channels followed by the model's own (wave elevation probes).

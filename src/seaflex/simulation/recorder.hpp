@@ -1,9 +1,13 @@
-// A sink for output rows: one value per channel at each output time.
+// A sink for output rows: one value per channel at each output time, with the state the
+// values were computed from (for recorders that derive their own results from it: beam
+// results along the length, node positions, VTK frames).
 #pragma once
 
 #include <span>
 #include <string>
 #include <vector>
+
+#include "seaflex/model/state.hpp"
 
 namespace seaflex {
 
@@ -12,7 +16,9 @@ class Recorder {
   virtual ~Recorder() = default;
   /// Called once with the channel names, before the first row.
   virtual void begin(const std::vector<std::string>& channels) = 0;
-  virtual void record(double t, std::span<const double> values) = 0;
+  /// One output row at state.t: values[i] is channel i; state is complete (multipliers
+  /// included) and valid only during the call.
+  virtual void record(const State& state, std::span<const double> values) = 0;
   /// Makes every recorded row durable (called on failure and at the end).
   virtual void flush() = 0;
 };

@@ -1,0 +1,51 @@
+// Beam results along the arc length (post/beam_results.hpp) as CSV files: per beam,
+// `<prefix><beam>.along.csv` with one line per station and output row, and
+// `<prefix><beam>.envelope.csv` with the minimum, maximum and mean of every quantity at
+// every station over the output rows, rewritten whenever the recorder is flushed (at the
+// end of a run and on a failure). Layout: docs/results-format.md.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "seaflex/post/beam_results.hpp"
+#include "seaflex/post/envelope.hpp"
+#include "seaflex/simulation/recorder.hpp"
+
+namespace seaflex::io {
+
+class BeamCsvRecorder : public Recorder {
+ public:
+  /// Opens (truncates) the along files when per_row; throws std::runtime_error when a
+  /// file cannot be written.
+  BeamCsvRecorder(const std::filesystem::path& dir, const std::string& prefix,
+                  std::vector<post::BeamResults> beams, bool per_row, bool envelope);
+  ~BeamCsvRecorder() override;
+  BeamCsvRecorder(const BeamCsvRecorder&) = delete;
+  BeamCsvRecorder& operator=(const BeamCsvRecorder&) = delete;
+
+  void begin(const std::vector<std::string>& channels) override;
+  void record(const State& state, std::span<const double> values) override;
+  void flush() override;
+
+  /// The files this recorder writes for these beams (for clearing an output directory).
+  static std::vector<std::filesystem::path> files(const std::filesystem::path& dir,
+                                                  const std::string& prefix,
+                                                  const std::vector<const AncfBeam*>& beams);
+
+ private:
+  struct Beam {
+    post::BeamResults results;
+    post::Envelope envelope;
+    std::FILE* along = nullptr;
+    std::filesystem::path along_path, envelope_path;
+  };
+  std::vector<Beam> beams_;
+  bool per_row_, envelope_;
+  MatX table_;
+  std::string line_;
+};
+
+}  // namespace seaflex::io

@@ -1,0 +1,39 @@
+// Results in one HDF5 file (HDF5 C API): the channels of the CSV time series, the node
+// positions of every output beam (time x node x 3), its results along the length (time x
+// station per quantity, post/beam_results.hpp) and their envelopes. Every dataset that
+// grows in time is chunked (rows of 16 KiB or more deflate-compressed, one per chunk);
+// each output row extends them and ends with H5Fflush, and file space is never reused,
+// so a run that is killed leaves a readable file holding every row written before.
+// Layout: docs/results-format.md.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "seaflex/post/beam_results.hpp"
+#include "seaflex/simulation/recorder.hpp"
+
+namespace seaflex::io {
+
+class Hdf5Recorder : public Recorder {
+ public:
+  /// Creates (truncates) the file; throws std::runtime_error when it cannot.
+  /// beams: the beams whose positions are written; their results along the length per
+  /// output row when per_row, their envelopes (written at every flush) when envelope.
+  Hdf5Recorder(const std::filesystem::path& path, std::vector<post::BeamResults> beams,
+               bool per_row, bool envelope);
+  ~Hdf5Recorder() override;
+  Hdf5Recorder(const Hdf5Recorder&) = delete;
+  Hdf5Recorder& operator=(const Hdf5Recorder&) = delete;
+
+  void begin(const std::vector<std::string>& channels) override;
+  void record(const State& state, std::span<const double> values) override;
+  void flush() override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace seaflex::io

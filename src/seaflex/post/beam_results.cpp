@@ -1,0 +1,133 @@
+#include "seaflex/post/beam_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "seaflex/math/gauss_legendre.hpp"
+
+namespace seaflex::post {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
+
+const std::array<BeamQuantityInfo, kBeamQuantityCount>& beam_quantities() {
+  static const std::array<BeamQuantityInfo, kBeamQuantityCount> kInfo = {{
+      {"x", "m"},
+      {"y", "m"},
+      {"z", "m"},
+      {"strain", "-"},
+      {"tension_wall", "N"},
+      {"tension_effective", "N"},
+      {"curvature", "1/m"},
+      {"moment", "N m"},
+      {"moment_x", "N m"},
+      {"moment_y", "N m"},
+      {"moment_z", "N m"},
+      {"pressure_internal", "Pa"},
+      {"pressure_external", "Pa"},
+      {"stress_axial", "Pa"},
+      {"stress_bending", "Pa"},
+      {"stress_von_mises", "Pa"},
+  }};
+  return kInfo;
+}
+
+BeamResults::BeamResults(const AncfBeam& beam, PipePressure pressure, int gauss_points)
+    : beam_(beam), pressure_(pressure) {
+  const math::QuadratureRule rule =
+      gauss_points > 0 ? math::gauss_legendre_unit(gauss_points) : math::QuadratureRule{};
+  const int n = beam.num_elements();
+  for (int k = 0; k <= n; ++k) {
+    stations_.push_back({std::min(k, n - 1), k == n ? 1.0 : 0.0, beam.node_arc_length(k), k});
+    if (k == n) break;
+    for (double xi : rule.points)
+      stations_.push_back({k, xi, beam.node_arc_length(k) + xi * beam.element_length(k), -1});
+  }
+}
+
+BeamResults::Point BeamResults::evaluate(const State& state, int element, double xi) const {
+  const double l = beam_.element_length(element);
+  const ancf_cable::Vec12 e = beam_.element_coordinates(state.q, element);
+  // r' and r'' from the relative node matrix: free of the round-off of far positions
+  const ancf_cable::Mat34 R = ancf_cable::relative_nodes(e);
+  Point p;
+  p.r = ancf_cable::as_nodes(e) * ancf_cable::shape(xi, l);
+  p.rp = R * ancf_cable::shape_dx(xi, l);
+  const Vec3 rpp = R * ancf_cable::shape_dxx(xi, l);
+  if (beam_.options().axial == ancf_cable::AxialModel::kL1) {
+    p.eps = ((R.col(2) - R.col(0)).norm() - l) / l;  // thesis eq. (24)
+  } else {
+    p.eps = 0.5 * (p.rp.squaredNorm() - 1.0);  // thesis eq. (12)
+  }
+  const double lambda = p.rp.norm();
+  p.m = beam_.section().EI() * p.rp.cross(rpp) / (lambda * lambda * lambda);  // thesis eq. (14)
+  return p;
+}
+
+void BeamResults::compute(const State& state, MatX& out) const {
+  out.resize(num_stations(), kBeamQuantityCount);
+  const BeamSection& sec = beam_.section();
+  const double EA = sec.EA(), EI = sec.EI();
+  const double A_e = 0.25 * kPi * pressure_.external_diameter * pressure_.external_diameter;
+  const double A_i = 0.25 * kPi * pressure_.contents_diameter * pressure_.contents_diameter;
+  // free surface of the contents: the beam's highest node
+  double z_top = -std::numeric_limits<double>::infinity();
+  for (int k = 0; k < beam_.num_nodes(); ++k)
+    z_top = std::max(z_top, state.q[beam_.node_index(k) + 2]);
+  const bool pipe = sec.outer_diameter > 0.0;
+  const double ro = 0.5 * sec.outer_diameter, ri = 0.5 * sec.inner_diameter;
+  const int n = beam_.num_elements();
+  for (Index i = 0; i < num_stations(); ++i) {
+    const BeamStation& st = stations_[static_cast<std::size_t>(i)];
+    Point p = evaluate(state, st.element, st.xi);
+    if (st.node > 0 && st.node < n) {  // interior node: mean of the two elements
+      const Point left = evaluate(state, st.node - 1, 1.0);
+      p.eps = 0.5 * (p.eps + left.eps);
+      p.m = 0.5 * (p.m + left.m);
+    }
+    const double z = p.r.z();
+    const double p_e = pressure_.water_density * pressure_.gravity * std::max(0.0, -z);
+    const double p_i = pressure_.contents_density * pressure_.gravity * (z_top - z);
+    const double T_eff = EA * p.eps * p.rp.norm();
+    const double T_wall = T_eff + p_i * A_i - p_e * A_e;  // DNV-OS-F201 effective tension
+    const double M = p.m.norm();
+    auto row = out.row(i);
+    row(static_cast<int>(BeamQuantity::kX)) = p.r.x();
+    row(static_cast<int>(BeamQuantity::kY)) = p.r.y();
+    row(static_cast<int>(BeamQuantity::kZ)) = z;
+    row(static_cast<int>(BeamQuantity::kStrain)) = p.eps;
+    row(static_cast<int>(BeamQuantity::kTensionWall)) = T_wall;
+    row(static_cast<int>(BeamQuantity::kTensionEffective)) = T_eff;
+    row(static_cast<int>(BeamQuantity::kCurvature)) = EI > 0.0 ? M / EI : 0.0;
+    row(static_cast<int>(BeamQuantity::kMoment)) = M;
+    row(static_cast<int>(BeamQuantity::kMomentX)) = p.m.x();
+    row(static_cast<int>(BeamQuantity::kMomentY)) = p.m.y();
+    row(static_cast<int>(BeamQuantity::kMomentZ)) = p.m.z();
+    row(static_cast<int>(BeamQuantity::kPressureInternal)) = p_i;
+    row(static_cast<int>(BeamQuantity::kPressureExternal)) = p_e;
+    row(static_cast<int>(BeamQuantity::kStressAxial)) = T_wall / sec.area;
+    if (pipe) {
+      // outer fibre: Lame hoop and radial stress, axial stress plus or minus bending
+      const double sb = M * ro / sec.second_moment;
+      const double sr = -p_e;
+      const double sh = (2.0 * p_i * ri * ri - p_e * (ro * ro + ri * ri)) / (ro * ro - ri * ri);
+      double vm = 0.0;
+      for (double sign : {1.0, -1.0}) {
+        const double sz = T_wall / sec.area + sign * sb;
+        vm = std::max(vm, std::sqrt(0.5 * ((sz - sh) * (sz - sh) + (sh - sr) * (sh - sr) +
+                                           (sr - sz) * (sr - sz))));
+      }
+      row(static_cast<int>(BeamQuantity::kStressBending)) = sb;
+      row(static_cast<int>(BeamQuantity::kStressVonMises)) = vm;
+    } else {
+      row(static_cast<int>(BeamQuantity::kStressBending)) = kNaN;
+      row(static_cast<int>(BeamQuantity::kStressVonMises)) = kNaN;
+    }
+  }
+}
+
+}  // namespace seaflex::post

@@ -1,0 +1,29 @@
+#include "seaflex/post/envelope.hpp"
+
+#include <stdexcept>
+
+namespace seaflex::post {
+
+void Envelope::add(const MatX& values) {
+  if (count_ == 0) {
+    min_ = max_ = sum_ = values;
+  } else {
+    if (values.rows() != min_.rows() || values.cols() != min_.cols())
+      throw std::invalid_argument("Envelope::add: the table changed size");
+    // cwiseMin/Max would drop NaN in favour of the number: keep NaN where it applies
+    for (Index j = 0; j < values.cols(); ++j)
+      for (Index i = 0; i < values.rows(); ++i) {
+        const double v = values(i, j);
+        if (v < min_(i, j)) min_(i, j) = v;
+        if (v > max_(i, j)) max_(i, j) = v;
+        sum_(i, j) += v;
+      }
+  }
+  ++count_;
+}
+
+MatX Envelope::mean() const {
+  return count_ > 0 ? MatX(sum_ / static_cast<double>(count_)) : MatX();
+}
+
+}  // namespace seaflex::post

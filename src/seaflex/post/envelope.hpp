@@ -1,0 +1,26 @@
+// Envelopes of results over time: the minimum, maximum and mean of every entry of a
+// table (stations x quantities) over the output rows it is given. NaN entries (a
+// quantity that does not apply) stay NaN.
+#pragma once
+
+#include "seaflex/core/types.hpp"
+
+namespace seaflex::post {
+
+class Envelope {
+ public:
+  /// Adds one output row's table; every table must have the size of the first.
+  void add(const MatX& values);
+
+  long count() const { return count_; }
+  const MatX& min() const { return min_; }
+  const MatX& max() const { return max_; }
+  /// The mean over the rows added (the sum divided by count()).
+  MatX mean() const;
+
+ private:
+  long count_ = 0;
+  MatX min_, max_, sum_;
+};
+
+}  // namespace seaflex::post

@@ -1,0 +1,339 @@
+#!/usr/bin/env python3
+"""End-to-end tests of seaflex's result files (docs/results-format.md): HDF5 holds the
+same numbers as the CSV files, a run killed with SIGKILL leaves a readable HDF5 file with
+every row written before the kill, beam results along the length and their envelopes,
+and the model's output section (format, channels, bodies).
+
+Needs h5py and VTK's Python module (Debian: python3-h5py, python3-vtk9).
+
+usage: test_results.py SEAFLEX_EXECUTABLE SOURCE_DIR
+"""
+import csv
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+import xml.etree.ElementTree as ET
+
+import h5py
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+SEAFLEX = sys.argv[1] if len(sys.argv) > 1 else "build/seaflex"
+SRC = sys.argv[2] if len(sys.argv) > 2 else "."
+
+
+def run(*args, timeout=300):
+    return subprocess.run([SEAFLEX, *args], capture_output=True, text=True, timeout=timeout)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], np.array([[float(x) for x in r] for r in rows[1:]])
+
+
+# a 60 m riser in water with mud, pinned at the top, pulled at the bottom, in a current:
+# tension, bending and pressures all non-zero
+RISER = """
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 500}
+  current: {speed: 1.0, direction: 0}
+bodies:
+  riser:
+    type: ancf_beam
+    start: [0, 0, -5]
+    end: [0, 0, -65]
+    elements: 45
+    outer_diameter: 0.5
+    inner_diameter: 0.45
+    youngs_modulus: 2.1e11
+    density: 7850
+  buoy: {type: rigid_body, mass: 100, inertia: [10, 10, 10], position: [5, 0, 0]}
+supports:
+  - {body: riser, node: start, type: pinned}
+hydrodynamics:
+  riser: {cd: 1.0, cm: 2.0, contents_density: 1200}
+loads:
+  - {type: point_force, body: riser, node: end, force: [0, 0, -1.0e5]}
+dynamics:
+  integrator: generalized_alpha
+  time_step: 0.05
+  step_control: adaptive
+  duration: DURATION
+  output_interval: 0.1
+"""
+
+
+class Results(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def model(self, text, name="model.yaml"):
+        path = os.path.join(self.dir, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_hdf5_holds_the_csv_numbers(self):
+        out = os.path.join(self.dir, "out")
+        r = run("run", self.model(RISER.replace("DURATION", "2.0")), "-o", out, "-q",
+                "--format", "both")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            self.assertEqual(f.attrs["format"], "seaflex results 1")
+            names = [n.decode() for n in f["channel_names"][:]]
+            self.assertEqual(["time"] + names, header)
+            # 21 rows: t = 0, 0.1, ..., 2.0
+            self.assertEqual(f["time"].shape, (21,))
+            self.assertEqual(f["channels"].shape, (21, len(names)))
+            # the CSV prints 17 significant digits, which round-trip doubles: equal bits
+            np.testing.assert_array_equal(f["time"][:], rows[:, 0])
+            np.testing.assert_array_equal(f["channels"][:], rows[:, 1:])
+            # positions: time x node x 3, the same numbers as the node channels
+            pos = f["beams/riser/positions"][:]
+            self.assertEqual(pos.shape, (21, 46, 3))
+            for k in range(46):
+                for c, axis in enumerate("xyz"):
+                    np.testing.assert_array_equal(pos[:, k, c],
+                                                  rows[:, header.index(f"riser.n{k}.{axis}")])
+            # rows under 16 KiB: uncompressed chunks of several rows (rewritten in place)
+            self.assertIsNone(f["beams/riser/positions"].compression)
+            self.assertEqual(f["beams/riser/positions"].chunks, (14, 46, 3))
+            # beam results: per quantity time x station, against riser.along.csv
+            s = f["beams/riser/stations/s"][:]
+            self.assertEqual(len(s), 3 * 45 + 1)  # 46 nodes, 2 Gauss points per element
+            along_header, along = read_csv(os.path.join(out, "riser.along.csv"))
+            self.assertEqual(along_header[:3], ["time", "station", "s"])
+            self.assertEqual(along.shape[0], 21 * 136)
+            for q in along_header[3:]:
+                np.testing.assert_array_equal(f[f"beams/riser/results/{q}"][:].ravel(),
+                                              along[:, along_header.index(q)], q)
+            self.assertEqual(f["beams/riser/results/tension_effective"].attrs["units"], "N")
+            # envelopes: min, max, mean over the 21 rows, as riser.envelope.csv
+            env_header, env = read_csv(os.path.join(out, "riser.envelope.csv"))
+            self.assertEqual(env.shape[0], 136)
+            T = f["beams/riser/results/tension_effective"][:]
+            np.testing.assert_array_equal(f["beams/riser/envelope/max/tension_effective"][:],
+                                          T.max(axis=0))
+            np.testing.assert_array_equal(f["beams/riser/envelope/min/tension_effective"][:],
+                                          T.min(axis=0))
+            # the mean is summed in another order than numpy's: 1e-12 relative
+            np.testing.assert_allclose(f["beams/riser/envelope/mean/tension_effective"][:],
+                                       T.mean(axis=0), rtol=1e-12)
+            for part in ("min", "max", "mean"):
+                np.testing.assert_array_equal(
+                    f[f"beams/riser/envelope/{part}/moment"][:],
+                    env[:, env_header.index(f"moment.{part}")])
+
+    def test_killed_run_leaves_a_readable_hdf5_file(self):
+        out = os.path.join(self.dir, "killed")
+        model = self.model(RISER.replace("DURATION", "10000"), "long.yaml")
+        proc = subprocess.Popen([SEAFLEX, "run", model, "-o", out, "-q", "--format", "both"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        csv_path = os.path.join(out, "timeseries.csv")
+        deadline = time.time() + 60
+        try:
+            # wait for 30 rows in the CSV, which is written row by row like the HDF5 file
+            while time.time() < deadline:
+                if os.path.exists(csv_path):
+                    with open(csv_path) as f:
+                        if sum(1 for _ in f) > 30:
+                            break
+                time.sleep(0.05)
+            self.assertIsNone(proc.poll(), "the run ended before it was killed")
+            proc.send_signal(signal.SIGKILL)
+        finally:
+            proc.wait()
+        self.assertEqual(proc.returncode, -signal.SIGKILL)
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            t = f["time"][:]
+            values = f["channels"][:]
+            T = f["beams/riser/results/tension_effective"][:]
+        n = len(t)
+        self.assertGreaterEqual(n, 30)
+        # consecutive output times 0, 0.1, 0.2, ... (the loop counts ticks: exact to
+        # round-off of k * 0.1)
+        np.testing.assert_allclose(t, 0.1 * np.arange(n), rtol=0, atol=1e-12)
+        self.assertEqual(values.shape[0], n)
+        self.assertEqual(T.shape[0], n)
+        # the same numbers as a complete run of the first rows (runs are deterministic)
+        ref = os.path.join(self.dir, "ref")
+        r = run("run", self.model(RISER.replace("DURATION", f"{0.1 * (n - 1):.1f}"), "short.yaml"),
+                "-o", ref, "-q", "--format", "hdf5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(ref, "timeseries.csv")))
+        with h5py.File(os.path.join(ref, "timeseries.h5"), "r") as f:
+            np.testing.assert_array_equal(f["channels"][:], values)
+            np.testing.assert_array_equal(f["beams/riser/results/tension_effective"][:], T)
+
+    def test_output_section_selects_format_channels_and_bodies(self):
+        text = RISER.replace("DURATION", "0.2") + """
+output:
+  format: hdf5
+  channels: ["riser.n45.*", "buoy.z"]
+  bodies: [riser, buoy]
+  beam_results: envelope
+"""
+        out = os.path.join(self.dir, "sel")
+        os.makedirs(out)
+        stale = os.path.join(out, "riser.along.csv")
+        with open(stale, "w") as f:
+            f.write("from an earlier run\n")
+        r = run("run", self.model(text), "-o", out, "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("timeseries.h5", r.stdout)
+        self.assertFalse(os.path.exists(os.path.join(out, "timeseries.csv")))
+        self.assertFalse(os.path.exists(stale))  # earlier results are removed first
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            names = [n.decode() for n in f["channel_names"][:]]
+            self.assertEqual(names, ["riser.n45.x", "riser.n45.y", "riser.n45.z", "buoy.z"])
+            self.assertNotIn("results", f["beams/riser"])  # envelope only
+            self.assertEqual(f["beams/riser/envelope"].attrs["rows"], 3)
+        # --format overrides the model
+        r = run("run", self.model(text), "-o", out, "-q", "--format", "csv")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        self.assertEqual(header, ["time", "riser.n45.x", "riser.n45.y", "riser.n45.z", "buoy.z"])
+        self.assertFalse(os.path.exists(os.path.join(out, "timeseries.h5")))
+        self.assertFalse(os.path.exists(os.path.join(out, "riser.along.csv")))
+        self.assertTrue(os.path.exists(os.path.join(out, "riser.envelope.csv")))
+
+    def test_statics_in_hdf5(self):
+        out = os.path.join(self.dir, "st")
+        # without the free buoy, which has no static equilibrium
+        text = "\n".join(l for l in RISER.replace("DURATION", "1").splitlines()
+                         if not l.strip().startswith("buoy:"))
+        r = run("statics", self.model(text), "-o", out, "-q", "--format", "both")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "statics.csv"))
+        along_header, along = read_csv(os.path.join(out, "statics.riser.along.csv"))
+        with h5py.File(os.path.join(out, "statics.h5"), "r") as f:
+            np.testing.assert_array_equal(f["channels"][:], rows[:, 1:])
+            np.testing.assert_array_equal(f["beams/riser/results/moment"][0],
+                                          along[:, along_header.index("moment")])
+            # the effective tension at the top carries the pull (1e5 N) and the submerged
+            # weight (steel + mud - buoyancy) of the 60 m below; the current's drag (15 kN
+            # sideways) adds 0.2 %: 1 % asked
+            w_sub = (7850 * np.pi / 4 * (0.25 - 0.2025) + 1200 * np.pi / 4 * 0.2025
+                     - 1025 * np.pi / 4 * 0.25) * 9.81
+            T_top = f["beams/riser/results/tension_effective"][0, 0]
+            self.assertAlmostEqual(T_top / (1e5 + 60 * w_sub), 1.0, delta=0.01)
+        self.assertFalse(os.path.exists(os.path.join(out, "statics.riser.envelope.csv")))
+
+    def test_large_rows_are_compressed(self):
+        # a 1000-element beam: rows of 3001 stations (24 KiB) are compressed chunks of one row
+        text = """
+environment: {gravity: 9.81}
+bodies:
+  beam: {type: ancf_beam, start: [0, 0, 0], end: [10, 0, 0], elements: 1000, area: 0.01,
+         second_moment: 8.33e-6, youngs_modulus: 210e9, density: 7850}
+supports:
+  - {body: beam, node: start, type: clamped}
+"""
+        out = os.path.join(self.dir, "big")
+        r = run("statics", self.model(text), "-o", out, "-q", "--format", "hdf5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with h5py.File(os.path.join(out, "statics.h5"), "r") as f:
+            for name, chunks in (("beams/beam/positions", (1, 1001, 3)),
+                                 ("beams/beam/results/moment", (1, 3001)),
+                                 ("channels", (1, 3003))):
+                self.assertEqual(f[name].compression, "gzip", name)
+                self.assertEqual(f[name].chunks, chunks, name)
+            self.assertIsNone(f["time"].compression)
+            # the cantilever under its own weight: moment w L^2 / 2 at the root to 1 % (the
+            # tip sags 5 % of L, which shortens the lever arms by about 0.3 %)
+            w = 7850 * 0.01 * 9.81
+            self.assertAlmostEqual(f["beams/beam/results/moment"][0, 0] / (w * 10**2 / 2), 1.0,
+                                   delta=0.01)
+
+    def test_paraview_time_series(self):
+        # the riser and the buoy in an Airy wave, and a plate on simply supported edges
+        text = RISER.replace("DURATION", "0.4").replace(
+            "  current: {speed: 1.0, direction: 0}",
+            "  current: {speed: 1.0, direction: 0}\n  waves: {type: airy, height: 2, period: 8}"
+        ).replace("supports:", """  plate: {type: ancf_plate, corner: [20, 0, -1], edge1: [4, 0, 0], edge2: [0, 3, 0],
+          elements: [2, 3], thickness: 0.05, youngs_modulus: 210e9, poisson_ratio: 0.3,
+          density: 7850}
+supports:
+  - {body: plate, type: simply_supported, edges: [i0, i_max, j0, j_max]}""")
+        out = os.path.join(self.dir, "vtk_out")
+        r = run("run", self.model(text), "-o", out, "-q", "--vtk", "--format", "hdf5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        pvd = ET.parse(os.path.join(out, "timeseries.pvd")).getroot()
+        sets = pvd.find("Collection").findall("DataSet")
+        # 5 rows (t = 0 ... 0.4) of 4 parts: beams, plates, rigid bodies, sea surface
+        self.assertEqual(len(sets), 5 * 4)
+        self.assertEqual([d.get("name") for d in sets[:4]], ["riser", "plate", "buoy", "sea_surface"])
+        # the times of the rows (3 * 0.1 s steps: 0.30000000000000004, printed exactly)
+        times = sorted({float(d.get("timestep")) for d in sets})
+        np.testing.assert_allclose(times, [0.0, 0.1, 0.2, 0.3, 0.4], rtol=0, atol=1e-15)
+
+        def read(entry):
+            reader = vtk.vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(out, entry.get("file")))
+            reader.Update()
+            return reader.GetOutput()
+
+        last = {d.get("name"): read(d) for d in sets[-4:]}
+        with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
+            # the riser: a polyline through its 136 stations with the beam results,
+            # printed with 17 digits: the HDF5 numbers exactly
+            riser = last["riser"]
+            self.assertEqual(riser.GetNumberOfPoints(), 136)
+            self.assertEqual(riser.GetNumberOfLines(), 1)
+            pd = riser.GetPointData()
+            for q in ("tension_effective", "moment", "stress_von_mises"):
+                np.testing.assert_array_equal(vtk_to_numpy(pd.GetArray(q)),
+                                              f[f"beams/riser/results/{q}"][-1], q)
+            np.testing.assert_array_equal(vtk_to_numpy(pd.GetArray("outer_diameter")),
+                                          np.full(136, 0.5))
+            pts = vtk_to_numpy(riser.GetPoints().GetData())
+            np.testing.assert_array_equal(pts[::3], f["beams/riser/positions"][-1])  # the nodes
+            # the buoy: the box of its inertia (10 kg m^2 about each axis, 100 kg): a cube of
+            # side sqrt(6 * 10 / 100), centred on its centre of gravity (round-off: 1e-12 m)
+            buoy = last["buoy"]
+            self.assertEqual((buoy.GetNumberOfPoints(), buoy.GetNumberOfPolys()), (8, 6))
+            corners = vtk_to_numpy(buoy.GetPoints().GetData())
+            names = [n.decode() for n in f["channel_names"][:]]
+            cg = [f["channels"][-1, names.index(f"buoy.{a}")] for a in "xyz"]
+            np.testing.assert_allclose(corners.mean(axis=0), cg, rtol=0, atol=1e-12)
+            np.testing.assert_allclose(np.ptp(corners, axis=0), np.full(3, np.sqrt(0.6)),
+                                       rtol=0, atol=1e-12)
+            # the plate: (2 + 1) x (3 + 1) nodes, 2 x 3 quads
+            plate = last["plate"]
+            self.assertEqual((plate.GetNumberOfPoints(), plate.GetNumberOfPolys()), (12, 6))
+        # the sea surface: a 41 x 41 grid whose z is the elevation of the 2 m Airy wave:
+        # |eta| <= 1 m, and the crest passes x = 0 at t = 0 (eta(0, 0, 0) = 1 m)
+        sea = read(sets[3])
+        self.assertEqual((sea.GetNumberOfPoints(), sea.GetNumberOfPolys()), (41 * 41, 40 * 40))
+        z = vtk_to_numpy(sea.GetPoints().GetData())[:, 2]
+        np.testing.assert_array_equal(z, vtk_to_numpy(sea.GetPointData().GetArray("elevation")))
+        self.assertLessEqual(np.abs(z).max(), 1.0 + 1e-12)
+        self.assertGreater(z.max(), 0.99)
+        # asked for only: no vtk files without --vtk or output.vtk
+        r = run("run", self.model(text), "-o", out, "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(out, "timeseries.pvd")))
+        self.assertFalse(os.path.exists(os.path.join(out, "vtk", "timeseries")))
+
+    def test_bad_format_option(self):
+        r = run("run", self.model(RISER.replace("DURATION", "1")), "-o", self.dir,
+                "--format", "xml")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--format", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
