@@ -12,6 +12,9 @@ DIR/plots/:
   cylinders.png         stroke, pressure and force of every pneumatic cylinder
   joint_forces.png      the resultant force of every joint (at a riser's end joint: the
                         riser's effective tension there)
+  range_<beam>.png      range graphs from <beam>.envelope.csv: min, max and mean over the
+                        run of effective tension, bending moment, von Mises stress and the
+                        horizontal position, against arc length
 With channels (names, or shell patterns such as 'platform.*'), one figure per channel,
 <channel>.png. Uses Debian's python3-matplotlib (Agg backend, no display needed).
 Exit codes: 0 done, 2 bad input (no such directory, file or channel).
@@ -171,6 +174,43 @@ def report(header, cols, out, snapshots, written):
                os.path.join(out, "joint_forces.png"), written)
 
 
+RANGE_ITEMS = [("tension_effective", "effective tension (N)", 1.0),
+               ("moment", "bending moment (N m)", 1.0),
+               ("stress_von_mises", "von Mises stress (MPa)", 1e-6),
+               ("x", "x (m)", 1.0)]
+
+
+def plot_ranges(directory, out, written):
+    """Range graphs (envelopes against arc length) of every <beam>.envelope.csv."""
+    for name in sorted(os.listdir(directory)):
+        if not name.endswith(".envelope.csv"):
+            continue
+        beam = name[: -len(".envelope.csv")]
+        with open(os.path.join(directory, name), newline="") as f:
+            reader = csv.reader(f)
+            header = next(reader, None)
+            rows = [r for r in reader if header and len(r) == len(header)]
+        if not header or "s" not in header or not rows:
+            continue
+        col = {h: i for i, h in enumerate(header)}
+        s = [float(r[col["s"]]) for r in rows]
+        items = [it for it in RANGE_ITEMS if it[0] + ".max" in col]
+        if not items:
+            continue
+        fig, axes = plt.subplots(len(items), 1, figsize=(10, 2.6 * len(items)), sharex=True)
+        axes = axes if len(items) > 1 else [axes]
+        for ax, (key, label, scale) in zip(axes, items):
+            for stat, style in (("max", "-"), ("mean", "--"), ("min", "-")):
+                values = [float(r[col["%s.%s" % (key, stat)]]) * scale for r in rows]
+                ax.plot(s, values, style, lw=1, label=stat)
+            ax.set_ylabel(label)
+            ax.grid(True, alpha=0.3)
+        axes[0].legend(fontsize=8)
+        axes[-1].set_xlabel("arc length from the beam's start (m)")
+        fig.suptitle("%s: range over the run" % beam)
+        save(fig, os.path.join(out, "range_%s.png" % beam), written)
+
+
 def channels(header, cols, patterns, out, written):
     t = cols["time"]
     for pattern in patterns:
@@ -206,6 +246,7 @@ def main(argv):
         channels(header, cols, args.channels, out, written)
     else:
         report(header, cols, out, max(2, args.snapshots), written)
+        plot_ranges(args.dir, out, written)
     for w in written:
         print("wrote %s" % w)
     return 0

@@ -326,7 +326,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet,
   } catch (const Interrupted&) {
     progress.done();
     std::fprintf(stderr, "seaflex: results up to the interruption are in %s\n",
-                 (dir / "timeseries.csv").c_str());
+                 outputs.names().c_str());
     throw;
   }
   return 0;

@@ -389,7 +389,7 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         r = run("plot", out)
         self.assertEqual(r.returncode, 0, r.stderr)
         for name in ["motion_platform.png", "beam_riser.png", "tensions.png", "cylinders.png",
-                     "joint_forces.png"]:
+                     "joint_forces.png", "range_riser.png"]:
             path = os.path.join(out, "plots", name)
             with open(path, "rb") as f:
                 head = f.read(24)
