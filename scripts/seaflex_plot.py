@@ -3,7 +3,8 @@
 
     seaflex_plot.py DIR [CHANNEL ...] [--out PLOTDIR] [--snapshots N]
 
-DIR holds timeseries.csv (seaflex run). Without channels it writes a report into
+DIR holds timeseries.csv or timeseries.h5 (seaflex run). Without channels it writes a
+report into
 DIR/plots/:
   motion_<body>.png     surge, sway, heave, roll, pitch, yaw of each rigid body
   beam_<beam>.png       horizontal deflection (x and y) against height at N moments,
@@ -57,6 +58,21 @@ def read_csv(path):
             for name, value in zip(header, row):
                 cols[name].append(float(value))
     return header, cols
+
+
+def read_h5(path):
+    """The channels of a timeseries.h5 (docs/results-format.md), as read_csv gives them."""
+    try:
+        import h5py
+    except ImportError:
+        fail("%s: reading HDF5 results needs h5py (Debian: apt-get install python3-h5py)" % path)
+    with h5py.File(path, "r") as f:
+        names = list(f["channel_names"].asstr()[:])
+        values = f["channels"][:]
+        cols = {"time": list(f["time"][:])}
+    for k, name in enumerate(names):
+        cols[name] = list(values[:, k])
+    return ["time"] + names, cols
 
 
 def steady_axis(ax, values):
@@ -233,10 +249,14 @@ def main(argv):
     global DPI
     DPI = max(30, args.dpi)
     path = os.path.join(args.dir, "timeseries.csv")
-    if not os.path.isfile(path):
-        fail("%s: no timeseries.csv here (write one with seaflex run MODEL -o %s)"
+    h5 = os.path.join(args.dir, "timeseries.h5")
+    if os.path.isfile(path):
+        header, cols = read_csv(path)
+    elif os.path.isfile(h5):
+        header, cols = read_h5(h5)
+    else:
+        fail("%s: no timeseries.csv or timeseries.h5 here (write one with seaflex run MODEL -o %s)"
              % (args.dir, args.dir))
-    header, cols = read_csv(path)
     if len(cols["time"]) < 2:
         fail("%s: fewer than two rows" % path)
     out = args.out or os.path.join(args.dir, "plots")

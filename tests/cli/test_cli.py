@@ -406,7 +406,15 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         self.assertIn("no channel matches 'no_such_channel'", r.stderr)
         r = run("plot", os.path.join(self.dir, "empty"))
         self.assertEqual(r.returncode, 2)
-        self.assertIn("no timeseries.csv here", r.stderr)
+        self.assertIn("no timeseries.csv or timeseries.h5 here", r.stderr)
+        # HDF5 results plot the same way (read with h5py)
+        h5 = os.path.join(self.dir, "barge_h5")
+        r = run("run", os.path.join(EXAMPLES, "barge_riser.yaml"), "-o", h5, "-q", "--format", "hdf5")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(h5, "timeseries.csv")))
+        r = run("plot", h5, "barge.x")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertGreater(os.path.getsize(os.path.join(h5, "plots", "barge.x.png")), 10000)
 
     def test_riser_bows_with_the_current_in_statics(self):
         out = os.path.join(self.dir, "riser")
