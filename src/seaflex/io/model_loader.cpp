@@ -246,8 +246,8 @@ YAML::Node parse(const std::string& text, const std::string& name) {
 ChannelList model_channels(const Model& model) {
   ChannelList list = model.system->channels();
   if (model.ocean)
-    for (const auto& [name, p] : model.wave_probes)
-      list.push_back({name, [ocean = model.ocean, p](const State& s) {
+    for (const auto& probe : model.wave_probes)  // (name, point)
+      list.push_back({probe.first, [ocean = model.ocean, p = probe.second](const State& s) {
                         return ocean->elevation(p.x(), p.y(), s.t);
                       }});
   return list;
