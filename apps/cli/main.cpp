@@ -5,11 +5,15 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 #include "plot_command.hpp"
+#include "seaflex/core/checkpoint.hpp"
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/interrupt.hpp"
 #include "seaflex/core/parallel.hpp"
@@ -77,7 +81,9 @@ void make_output_dir(const fs::path& dir) {
 // .envelope.csv; HDF5: inside <stem>.h5).
 class Outputs {
  public:
-  Outputs(const io::Model& model, const fs::path& dir, const std::string& stem, bool envelopes) {
+  /// resume: continue the files of a checkpointed run (CSV only; see restore()).
+  Outputs(const io::Model& model, const fs::path& dir, const std::string& stem, bool envelopes,
+          bool resume = false) {
     const io::OutputSettings& out = model.output;
     const bool csv = out.format != io::OutputFormat::kHdf5;
     const bool h5 = out.format != io::OutputFormat::kCsv;
@@ -91,11 +97,11 @@ class Outputs {
       return list;
     };
     if (csv) {
-      csv_ = std::make_unique<io::CsvRecorder>(dir / fmt::format("{}.csv", stem));
+      csv_ = std::make_unique<io::CsvRecorder>(dir / fmt::format("{}.csv", stem), resume);
       files_.push_back(dir / fmt::format("{}.csv", stem));
       if (per_row || envelope)
-        beams_csv_ =
-            std::make_unique<io::BeamCsvRecorder>(dir, prefix, beam_results(), per_row, envelope);
+        beams_csv_ = std::make_unique<io::BeamCsvRecorder>(dir, prefix, beam_results(), per_row,
+                                                           envelope, resume);
     }
     if (h5) {
       h5_ = std::make_unique<io::Hdf5Recorder>(dir / fmt::format("{}.h5", stem), beam_results(),
@@ -133,6 +139,18 @@ class Outputs {
                          (dir / fmt::format("{}.h5", stem)).string());
     return (dir / fmt::format("{}.{}", stem, f == io::OutputFormat::kCsv ? "csv" : "h5")).string();
   }
+  /// Restart files: the position of every recorder; false when one cannot continue a run.
+  bool save(CheckpointWriter& out) {
+    const auto list = recorders();
+    for (std::size_t k = 0; k < list.size(); ++k)
+      if (!list[k]->save(out, fmt::format("recorder{}", k))) return false;
+    return true;
+  }
+  void restore(const CheckpointReader& in) {
+    const auto list = recorders();
+    for (std::size_t k = 0; k < list.size(); ++k)
+      list[k]->restore(in, fmt::format("recorder{}", k));
+  }
   /// The files of the channels, for messages.
   std::string names() const {
     std::string list;
@@ -162,7 +180,7 @@ class Outputs {
 void clear_results(const io::Model& model, const fs::path& dir) {
   std::vector<fs::path> files;
   for (const char* f : {"statics.csv", "statics_partial.csv", "timeseries.csv", "modes.csv",
-                        "statics.h5", "statics_partial.h5", "timeseries.h5"})
+                        "statics.h5", "statics_partial.h5", "timeseries.h5", "checkpoint.txt"})
     files.push_back(dir / f);
   std::vector<const AncfBeam*> beams;
   for (const auto& b : model.system->bodies())
@@ -282,26 +300,71 @@ int cmd_statics(const std::string& file, const fs::path& dir, bool quiet,
   return 0;
 }
 
-int cmd_run(const std::string& file, const fs::path& dir, bool quiet,
-            const OutputOptions& options) {
-  const io::Model model = load_model(file, options);
-  if (!model.dynamics)
-    throw InputError({Diagnostic{file, 0, 0, "dynamics",
-                                 "'seaflex run' needs a dynamics section (time_step, duration); "
-                                 "see docs/model-format.md"}});
-  make_output_dir(dir);
-  clear_results(model, dir);
+// Restart files: FNV-1a of the model file (a resumed run refuses a changed model), and
+// text as hex (a path with blanks stays one word).
+std::string fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  return fmt::format("{:016x}", h);
+}
+std::string to_hex(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) out += fmt::format("{:02x}", c);
+  return out;
+}
+std::string from_hex(const std::string& hex) {
+  std::string out;
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+    out += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+  return out;
+}
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Checkpoints every `rows` output rows into DIR/checkpoint.txt, or refuses a model or
+// output that a restart file cannot hold yet.
+void enable_checkpoints(Simulation& sim, const io::Model& model, const std::string& file,
+                        const fs::path& dir, long rows, Integrator& integrator, Outputs& outputs) {
+  for (const auto& f : model.system->forces())
+    if (f->has_memory())
+      throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
+                                   fmt::format("restart files do not hold the memory of '{}' "
+                                               "(radiation) yet; run without checkpoints",
+                                               f->name())}});
+  if (model.output.format != io::OutputFormat::kCsv || model.output.vtk)
+    throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
+                                 "restart files continue CSV results only; use --format csv "
+                                 "and no VTK output with checkpoints"}});
+  const std::string model_path = fs::absolute(file).string();
+  const std::string hash = fnv1a(file_text(file));
+  sim.set_checkpoint(rows,
+                     [=, &integrator, &outputs](const State& state, const SimulationPosition& pos) {
+                       CheckpointWriter w;
+                       w.put("format", std::string("seaflex-checkpoint-1"));
+                       w.put("model", to_hex(model_path));
+                       w.put("model_hash", hash);
+                       w.put("checkpoint_rows", rows);
+                       pos.save(w);
+                       w.put("state.t", state.t);
+                       w.put("state.q", state.q);
+                       w.put("state.v", state.v);
+                       w.put("state.lambda", state.lambda);
+                       if (!integrator.save(w) || !outputs.save(w))
+                         throw std::runtime_error("this run cannot be checkpointed");
+                       w.write((dir / "checkpoint.txt").string());
+                     });
+}
+
+// Runs the simulation (fresh, or from a checkpoint) and prints its summary.
+int simulate(Simulation& sim, State& state, const io::Model& model, const fs::path& dir,
+             Outputs& outputs, bool quiet, const SimulationPosition* resume_at) {
   const auto& d = *model.dynamics;
-  State state =
-      d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
-  auto integrator = d.make_integrator();
-  Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
-  Outputs outputs(model, dir, "timeseries", true);
-  outputs.attach(sim);
   ProgressLine progress(quiet);
   sim.set_progress([&](double t, double T) { progress.update(t, T); });
   try {
-    const SimulationReport rep = sim.run(state);
+    const SimulationReport rep = resume_at ? sim.resume(state, *resume_at) : sim.run(state);
     progress.done();
     const std::string thread_note =
         fmt::format("{} thread{}", threads(), threads() == 1 ? "" : "s");
@@ -330,6 +393,77 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet,
     throw;
   }
   return 0;
+}
+
+// the number of output rows between checkpoints every `seconds` (a whole number of rows)
+long checkpoint_rows(const io::DynamicsSettings& d, double seconds, const std::string& file) {
+  const double interval =
+      d.simulation().output_interval > 0.0 ? d.simulation().output_interval : d.time_step;
+  const double rows = seconds / interval;
+  if (!(rows >= 1.0 - 1e-9) || std::abs(rows - std::round(rows)) > 1e-6 * rows)
+    throw InputError(
+        {Diagnostic{file, 0, 0, "--checkpoint-every",
+                    fmt::format("must be a whole number of output intervals ({:g} s), got {:g} s",
+                                interval, seconds)}});
+  return std::lround(rows);
+}
+
+int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const OutputOptions& options,
+            double checkpoint_every) {
+  const io::Model model = load_model(file, options);
+  if (!model.dynamics)
+    throw InputError({Diagnostic{file, 0, 0, "dynamics",
+                                 "'seaflex run' needs a dynamics section (time_step, duration); "
+                                 "see docs/model-format.md"}});
+  const auto& d = *model.dynamics;
+  const long rows = checkpoint_every > 0.0 ? checkpoint_rows(d, checkpoint_every, file) : 0;
+  make_output_dir(dir);
+  clear_results(model, dir);
+  State state =
+      d.start_from_statics ? run_statics(model, dir, quiet) : model.system->initial_state();
+  auto integrator = d.make_integrator();
+  Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
+  Outputs outputs(model, dir, "timeseries", true);
+  outputs.attach(sim);
+  if (rows > 0) enable_checkpoints(sim, model, file, dir, rows, *integrator, outputs);
+  return simulate(sim, state, model, dir, outputs, quiet, nullptr);
+}
+
+// Continues the run whose last checkpoint is DIR/checkpoint.txt: the joined files are
+// those an uninterrupted run writes, byte for byte.
+int cmd_resume(const fs::path& dir, bool quiet) {
+  const std::string path = (dir / "checkpoint.txt").string();
+  const CheckpointReader in(path);
+  const std::string file = from_hex(in.text("model"));
+  if (fnv1a(file_text(file)) != in.text("model_hash"))
+    throw InputError({Diagnostic{path, 0, 0, "model",
+                                 fmt::format("the model file {} changed since the checkpoint "
+                                             "(or is gone): a restart needs the same model",
+                                             file)}});
+  OutputOptions options;
+  options.format = "csv";
+  const io::Model model = load_model(file, options);
+  if (!model.dynamics)
+    throw InputError({Diagnostic{file, 0, 0, "dynamics", "the model has no dynamics section"}});
+  const auto& d = *model.dynamics;
+  auto integrator = d.make_integrator();
+  Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
+  Outputs outputs(model, dir, "timeseries", true, /*resume=*/true);
+  outputs.restore(in);
+  outputs.attach(sim);
+  State state = model.system->initial_state();
+  state.t = in.number("state.t");
+  state.q = in.vector("state.q");
+  state.v = in.vector("state.v");
+  state.lambda = in.vector("state.lambda");
+  if (state.q.size() != model.system->num_coordinates() ||
+      state.lambda.size() != model.system->num_constraints())
+    throw InputError({Diagnostic{path, 0, 0, "state", "the checkpoint is for another model"}});
+  integrator->restore(*model.system, in);
+  const SimulationPosition pos = SimulationPosition::load(in);
+  enable_checkpoints(sim, model, file, dir, in.integer("checkpoint_rows"), *integrator, outputs);
+  if (!quiet) fmt::print("resuming {} at t = {:g} s\n", file, state.t);
+  return simulate(sim, state, model, dir, outputs, quiet, &pos);
 }
 
 int cmd_modes(const std::string& file, const fs::path& dir, int count, bool about_initial,
@@ -443,6 +577,11 @@ int main(int argc, char** argv) {
   run->add_option("MODEL", file, "model file (YAML)")->required();
   run->add_option("-o,--output", dir, "output directory")->capture_default_str();
   run->add_flag("-q,--quiet", quiet, "no progress line");
+  double checkpoint_every = 0.0;
+  run->add_option("--checkpoint-every", checkpoint_every,
+                  "write DIR/checkpoint.txt every T seconds of simulated time (a whole number "
+                  "of output intervals), to continue with seaflex resume DIR")
+      ->check(CLI::PositiveNumber);
   add_threads(run);
   add_format(run);
   auto* modes = app.add_subcommand(
@@ -467,6 +606,13 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   add_threads(bench);
 
+  std::string resume_dir;
+  auto* resume =
+      app.add_subcommand("resume", "continue a run from its last checkpoint (DIR/checkpoint.txt)");
+  resume->add_option("DIR", resume_dir, "output directory of the checkpointed run")->required();
+  resume->add_flag("-q,--quiet", quiet, "no progress line");
+  add_threads(resume);
+
   std::string plot_dir, plot_out;
   std::vector<std::string> plot_channels;
   auto* plot = app.add_subcommand(
@@ -487,7 +633,8 @@ int main(int argc, char** argv) {
     install_interrupt_handlers();  // SIGINT/SIGTERM end a run after its current step
     if (*check) return cmd_check(file);
     if (*statics) return cmd_statics(file, dir, quiet, output_options);
-    if (*run) return cmd_run(file, dir, quiet, output_options);
+    if (*run) return cmd_run(file, dir, quiet, output_options, checkpoint_every);
+    if (*resume) return cmd_resume(resume_dir, quiet);
     if (*modes) return cmd_modes(file, dir, count, about_initial, quiet);
     if (*bench) return cmd_bench(file, bench_duration);
     if (*plot) return cli::cmd_plot(plot_dir, plot_channels, plot_out);

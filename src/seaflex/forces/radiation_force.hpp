@@ -24,6 +24,7 @@ class RadiationForce : public RigidBodyLoad {
 
   void start(const State& state) override;
   void accept_step(const State& state) override;
+  bool has_memory() const override { return true; }
   /// The memory force (body axes, about u) in the state.
   Vec6 memory_force(const State& state) const;
   void add_channels(ChannelList& channels) const override;

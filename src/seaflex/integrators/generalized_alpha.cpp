@@ -89,6 +89,64 @@ void GeneralizedAlpha::start(const Dae& dae, State& state) {
   started_ = true;
 }
 
+bool GeneralizedAlpha::save(CheckpointWriter& out) const {
+  out.put("ga.started", static_cast<long>(started_));
+  out.put("ga.q_scale", q_scale_);
+  out.put("ga.a_n", a_n_);
+  out.put("ga.abar_n", abar_n_);
+  out.put("ga.factored_h", factored_h_);
+  if (factored_h_ > 0.0) {
+    out.put("ga.factored_at.t", factored_at_.t);
+    out.put("ga.factored_at.q", factored_at_.q);
+    out.put("ga.factored_at.v", factored_at_.v);
+    out.put("ga.factored_at.lambda", factored_at_.lambda);
+  }
+  return true;
+}
+
+void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
+  if (!prepared_) prepare(dae);
+  started_ = in.integer("ga.started") != 0;
+  q_scale_ = in.number("ga.q_scale");
+  a_n_ = in.vector("ga.a_n");
+  abar_n_ = in.vector("ga.abar_n");
+  factored_h_ = in.number("ga.factored_h");
+  if (a_n_.size() != n_ || abar_n_.size() != n_)
+    throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
+  if (factored_h_ > 0.0) {
+    factored_at_.t = in.number("ga.factored_at.t");
+    factored_at_.q = in.vector("ga.factored_at.q");
+    factored_at_.v = in.vector("ga.factored_at.v");
+    factored_at_.lambda = in.vector("ga.factored_at.lambda");
+    // the same matrix at the same iterate, factored again: modified Newton goes on with
+    // exactly the matrix the saved run had
+    const double h = factored_h_;
+    const double bp = (1.0 - s_.alpha_m) / (s_.beta * h * h * (1.0 - s_.alpha_f));
+    const double gp = s_.gamma / (s_.beta * h);
+    DaeRequest req;
+    req.reaction_forces = m_ > 0;
+    req.matrix = true;
+    req.scales = MatrixScales{1.0, 1.0 / bp, gp / bp};
+    req.multiplier_hessian = true;
+    instrumented::evaluate(dae, factored_at_, req, eval_, stats_);
+    if (constant_mass_) {
+      DaeRequest mreq;
+      mreq.forces = false;
+      mreq.constraints = false;
+      mreq.matrix = true;
+      mreq.scales.km = 1.0;
+      DaeEval mass_eval = dae.make_eval();
+      dae.evaluate(factored_at_, mreq, mass_eval);
+      mass_ = mass_eval.kkt.matrix().topLeftCorner(n_, n_);
+    }
+    if (!instrumented::factorize(newton_solver_, eval_.kkt.matrix(), stats_))
+      throw SolverError("generalized-alpha: the restored Newton matrix is singular",
+                        factored_at_.t);
+  } else if (constant_mass_ && started_) {
+    throw std::invalid_argument("generalized-alpha: a checkpoint before the first step");
+  }
+}
+
 void GeneralizedAlpha::update_multipliers(const Dae& dae, State& state) {
   if (!started_) start(dae, state);
 }
@@ -194,6 +252,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
                         "without mass or supports, or redundant constraints",
                         newton_solver_.message()));
       factored_h_ = h;
+      factored_at_ = trial_;
       want_fresh = s_.newton == NewtonMode::kFull;
     }
     // -[r / beta'; C], r = M a + C_q^T lambda - Q

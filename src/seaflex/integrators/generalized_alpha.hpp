@@ -61,6 +61,9 @@ class GeneralizedAlpha : public Integrator {
   /// step, start() computes consistent ones.
   void update_multipliers(const Dae& dae, State& state) override;
 
+  bool save(CheckpointWriter& out) const override;
+  void restore(const Dae& dae, const CheckpointReader& in) override;
+
   const GeneralizedAlphaSettings& settings() const { return s_; }
   /// The true acceleration q'' at the last accepted step.
   const VecX& acceleration() const { return a_n_; }
@@ -87,6 +90,7 @@ class GeneralizedAlpha : public Integrator {
   KktSolver newton_solver_;   // the iteration matrix
   KktSolver initial_solver_;  // [M C_q^T; C_q 0] for the initial accelerations
   double factored_h_ = 0.0;   // the step the Newton matrix was factored for (0: none)
+  State factored_at_;         // the iterate it was factored at (restart: factored again)
   VecX a_n_, abar_n_, a_, abar_, Ma_, rhs_, sol_;
   State trial_;
   std::string failure_;

@@ -1,6 +1,8 @@
 // The interface every time integrator implements. Integrators see only the Dae.
 #pragma once
 
+#include "seaflex/core/checkpoint.hpp"
+
 #include <string>
 #include <string_view>
 
@@ -43,6 +45,13 @@ class Integrator {
   /// Sets state.lambda to the multipliers consistent with (t, q, v) (thesis eq. 132), for
   /// reaction outputs; called by the Simulation before it records a row.
   virtual void update_multipliers(const Dae& dae, State& state) = 0;
+
+  /// Restart files (core/checkpoint.hpp): writes what the integrator carries from one step
+  /// to the next; false when it cannot be checkpointed.
+  virtual bool save(CheckpointWriter& /*out*/) const { return false; }
+  /// Takes that back for dae, in place of start(): the next step() continues exactly as
+  /// the saved run would have.
+  virtual void restore(const Dae& /*dae*/, const CheckpointReader& /*in*/) {}
 
  protected:
   IntegratorStats stats_;

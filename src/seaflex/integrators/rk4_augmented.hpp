@@ -23,6 +23,12 @@ class Rk4Augmented : public Integrator {
 
   std::string_view name() const override { return "rk4"; }
   StepReport step(const Dae& dae, State& state, double h) override;
+  /// RK4 carries nothing from step to step but its factorization, which is rebuilt on
+  /// demand (constant when it is reused): a restart only prepares.
+  bool save(CheckpointWriter& /*out*/) const override { return true; }
+  void restore(const Dae& dae, const CheckpointReader& /*in*/) override {
+    if (!prepared_) prepare(dae);
+  }
   void update_multipliers(const Dae& dae, State& state) override;
 
   /// Accelerations and multipliers at a state (one augmented solve); used for stages

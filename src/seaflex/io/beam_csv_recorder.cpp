@@ -10,8 +10,8 @@ namespace seaflex::io {
 
 namespace {
 
-std::FILE* open_or_throw(const std::filesystem::path& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
+std::FILE* open_or_throw(const std::filesystem::path& path, const char* mode = "w") {
+  std::FILE* f = std::fopen(path.c_str(), mode);
   if (!f)
     throw std::runtime_error(
         fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
@@ -38,8 +38,9 @@ std::vector<std::filesystem::path> BeamCsvRecorder::files(
 }
 
 BeamCsvRecorder::BeamCsvRecorder(const std::filesystem::path& dir, const std::string& prefix,
-                                 std::vector<post::BeamResults> beams, bool per_row, bool envelope)
-    : per_row_(per_row), envelope_(envelope) {
+                                 std::vector<post::BeamResults> beams, bool per_row, bool envelope,
+                                 bool resume)
+    : per_row_(per_row), envelope_(envelope), resumed_(resume) {
   for (auto& r : beams) {
     const std::string name = r.beam().name();
     beams_.push_back({std::move(r),
@@ -47,7 +48,8 @@ BeamCsvRecorder::BeamCsvRecorder(const std::filesystem::path& dir, const std::st
                       nullptr,
                       dir / fmt::format("{}{}.along.csv", prefix, name),
                       dir / fmt::format("{}{}.envelope.csv", prefix, name)});
-    if (per_row_) beams_.back().along = open_or_throw(beams_.back().along_path);
+    if (per_row_)
+      beams_.back().along = open_or_throw(beams_.back().along_path, resume ? "ab" : "w");
   }
 }
 
@@ -57,7 +59,7 @@ BeamCsvRecorder::~BeamCsvRecorder() {
 }
 
 void BeamCsvRecorder::begin(const std::vector<std::string>&) {
-  if (!per_row_) return;
+  if (!per_row_ || resumed_) return;
   line_ = "time,station,s";
   for (const auto& q : post::beam_quantities())
     fmt::format_to(std::back_inserter(line_), ",{}", q.name);
@@ -110,6 +112,47 @@ void BeamCsvRecorder::flush() {
   }
   for (auto& b : beams_)
     if (b.along) std::fflush(b.along);
+}
+
+bool BeamCsvRecorder::save(CheckpointWriter& out, const std::string& prefix) const {
+  for (std::size_t k = 0; k < beams_.size(); ++k) {
+    const Beam& b = beams_[k];
+    const std::string p = fmt::format("{}.beam{}", prefix, k);
+    if (b.along) {
+      std::fflush(b.along);
+      out.put(p + ".bytes", static_cast<long>(std::ftell(b.along)));
+    }
+    if (envelope_) {
+      out.put(p + ".envelope.count", b.envelope.count());
+      if (b.envelope.count() > 0) {
+        out.put(p + ".envelope.min", b.envelope.min());
+        out.put(p + ".envelope.max", b.envelope.max());
+        out.put(p + ".envelope.sum", b.envelope.sum());
+      }
+    }
+  }
+  return true;
+}
+
+void BeamCsvRecorder::restore(const CheckpointReader& in, const std::string& prefix) {
+  for (std::size_t k = 0; k < beams_.size(); ++k) {
+    Beam& b = beams_[k];
+    const std::string p = fmt::format("{}.beam{}", prefix, k);
+    if (b.along) {
+      std::fclose(b.along);
+      b.along = nullptr;
+      std::filesystem::resize_file(b.along_path,
+                                   static_cast<std::uintmax_t>(in.integer(p + ".bytes")));
+      b.along = open_or_throw(b.along_path, "ab");
+    }
+    if (envelope_) {
+      const long count = in.integer(p + ".envelope.count");
+      if (count > 0)
+        b.envelope.restore(count, in.matrix(p + ".envelope.min"), in.matrix(p + ".envelope.max"),
+                           in.matrix(p + ".envelope.sum"));
+    }
+  }
+  resumed_ = true;
 }
 
 }  // namespace seaflex::io

@@ -21,7 +21,8 @@ class BeamCsvRecorder : public Recorder {
   /// Opens (truncates) the along files when per_row; throws std::runtime_error when a
   /// file cannot be written.
   BeamCsvRecorder(const std::filesystem::path& dir, const std::string& prefix,
-                  std::vector<post::BeamResults> beams, bool per_row, bool envelope);
+                  std::vector<post::BeamResults> beams, bool per_row, bool envelope,
+                  bool resume = false);
   ~BeamCsvRecorder() override;
   BeamCsvRecorder(const BeamCsvRecorder&) = delete;
   BeamCsvRecorder& operator=(const BeamCsvRecorder&) = delete;
@@ -29,6 +30,8 @@ class BeamCsvRecorder : public Recorder {
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
   void flush() override;
+  bool save(CheckpointWriter& out, const std::string& prefix) const override;
+  void restore(const CheckpointReader& in, const std::string& prefix) override;
 
   /// The files this recorder writes for these beams (for clearing an output directory).
   static std::vector<std::filesystem::path> files(const std::filesystem::path& dir,
@@ -44,6 +47,7 @@ class BeamCsvRecorder : public Recorder {
   };
   std::vector<Beam> beams_;
   bool per_row_, envelope_;
+  bool resumed_ = false;
   MatX table_;
   std::string line_;
 };

@@ -45,6 +45,9 @@ class Force {
   /// iterations in between only evaluate. Nothing by default.
   virtual void start(const State& /*state*/) {}
   virtual void accept_step(const State& /*state*/) {}
+  /// True when start()/accept_step() keep a memory (a radiation force's history), which
+  /// restart files do not hold yet.
+  virtual bool has_memory() const { return false; }
 
  private:
   std::string name_;

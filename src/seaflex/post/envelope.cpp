@@ -26,4 +26,11 @@ MatX Envelope::mean() const {
   return count_ > 0 ? MatX(sum_ / static_cast<double>(count_)) : MatX();
 }
 
+void Envelope::restore(long count, MatX min, MatX max, MatX sum) {
+  count_ = count;
+  min_ = std::move(min);
+  max_ = std::move(max);
+  sum_ = std::move(sum);
+}
+
 }  // namespace seaflex::post

@@ -17,6 +17,9 @@ class Envelope {
   const MatX& max() const { return max_; }
   /// The mean over the rows added (the sum divided by count()).
   MatX mean() const;
+  const MatX& sum() const { return sum_; }
+  /// Takes back a saved envelope (restart files).
+  void restore(long count, MatX min, MatX max, MatX sum);
 
  private:
   long count_ = 0;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "seaflex/core/checkpoint.hpp"
 #include "seaflex/model/state.hpp"
 
 namespace seaflex {
@@ -21,6 +22,16 @@ class Recorder {
   virtual void record(const State& state, std::span<const double> values) = 0;
   /// Makes every recorded row durable (called on failure and at the end).
   virtual void flush() = 0;
+
+  /// Restart files: after a flush, writes the recorder's position (file sizes, running
+  /// envelopes) under prefix; false when it cannot continue a run (a run with such a
+  /// recorder cannot be checkpointed).
+  virtual bool save(CheckpointWriter& /*out*/, const std::string& /*prefix*/) const {
+    return false;
+  }
+  /// Continues a saved run: cuts its files back to the saved position and appends from
+  /// there; begin() then writes no header. For recorders built in resume mode.
+  virtual void restore(const CheckpointReader& /*in*/, const std::string& /*prefix*/) {}
 };
 
 }  // namespace seaflex

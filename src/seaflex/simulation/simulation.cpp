@@ -46,28 +46,72 @@ void Simulation::record(State& state) {
   ++rows_;
 }
 
+void SimulationPosition::save(CheckpointWriter& out) const {
+  out.put("sim.t0", t0);
+  out.put("sim.ticks", ticks);
+  out.put("sim.level", static_cast<long>(level));
+  out.put("sim.successes", static_cast<long>(successes));
+  out.put("sim.rows", rows);
+  out.put("sim.scale", scale);
+  out.put("sim.steps", report.steps);
+  out.put("sim.rejected_steps", report.rejected_steps);
+  out.put("sim.iterations", report.iterations);
+  out.put("sim.max_constraint_violation", report.max_constraint_violation);
+  out.put("sim.min_step", report.min_step);
+}
+
+SimulationPosition SimulationPosition::load(const CheckpointReader& in) {
+  SimulationPosition p;
+  p.t0 = in.number("sim.t0");
+  p.ticks = in.integer("sim.ticks");
+  p.level = static_cast<int>(in.integer("sim.level"));
+  p.successes = static_cast<int>(in.integer("sim.successes"));
+  p.rows = in.integer("sim.rows");
+  p.scale = in.number("sim.scale");
+  p.report.steps = in.integer("sim.steps");
+  p.report.rejected_steps = in.integer("sim.rejected_steps");
+  p.report.iterations = in.integer("sim.iterations");
+  p.report.max_constraint_violation = in.number("sim.max_constraint_violation");
+  p.report.min_step = in.number("sim.min_step");
+  return p;
+}
+
 SimulationReport Simulation::run(State& state) {
+  SimulationPosition pos;
+  pos.t0 = state.t;
+  pos.scale = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+  pos.report.min_step = settings_.time_step;
+  return loop(state, pos, true);
+}
+
+SimulationReport Simulation::resume(State& state, const SimulationPosition& position) {
+  return loop(state, position, false);
+}
+
+SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fresh) {
   std::vector<std::string> names;
   for (const auto& c : channels_) names.push_back(c.name);
   for (Recorder* r : recorders_) r->begin(names);
 
-  const double t0 = state.t;
+  const double t0 = pos.t0;
   const long nominal = std::lround(settings_.duration / settings_.time_step);
   // time in ticks of h / 2^levels: a step at level l is 2^(levels - l) ticks
   const long per_step = 1L << levels_;
   const long total = nominal * per_step, out_ticks = every_ * per_step;
   const double tick = settings_.time_step / static_cast<double>(per_step);
   const bool adaptive = settings_.step_control == StepControl::kAdaptive;
-  SimulationReport report;
-  report.min_step = settings_.time_step;
-  // state scale for the divergence test
-  const double scale = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
+  SimulationReport& report = pos.report;
+  rows_ = pos.rows;
+  const double scale = pos.scale;  // for the divergence test
   try {
-    dae_.start(state);
-    integrator_.start(dae_, state);
-    record(state);
-    long ticks = 0;
-    int level = 0, successes = 0;
+    if (fresh) {
+      dae_.start(state);
+      integrator_.start(dae_, state);
+      record(state);
+    }
+    long& ticks = pos.ticks;
+    int& level = pos.level;
+    int& successes = pos.successes;
     while (ticks < total) {
       const long step_ticks = per_step >> level;
       const double h = static_cast<double>(step_ticks) * tick;
@@ -114,6 +158,11 @@ SimulationReport Simulation::run(State& state) {
       if (ticks % out_ticks == 0 || ticks == total) {
         record(state);
         if (progress_) progress_(state.t - t0, settings_.duration);
+        if (checkpoint_ && checkpoint_every_ > 0 && (rows_ - 1) % checkpoint_every_ == 0 &&
+            ticks < total) {
+          pos.rows = rows_;
+          checkpoint_(state, pos);
+        }
       }
       // SIGINT/SIGTERM: stop after the completed step (the catch below flushes)
       if (const int sig = interrupt_signal(); sig != 0 && ticks < total)

@@ -41,22 +41,51 @@ struct SimulationReport {
 /// Called every output row: (t, duration).
 using SimulationProgress = std::function<void(double, double)>;
 
+/// Where the time loop is (restart files): the start time, the time in ticks of
+/// h / 2^levels, the adaptive level and its count of successes, the rows written, the
+/// report so far.
+struct SimulationPosition {
+  double t0 = 0.0;
+  long ticks = 0;
+  int level = 0;
+  int successes = 0;
+  long rows = 0;
+  double scale = 1.0;  ///< the divergence test's state scale (of the initial state)
+  SimulationReport report;
+  void save(CheckpointWriter& out) const;
+  static SimulationPosition load(const CheckpointReader& in);
+};
+
+/// Called after every `every` output rows (not after the last): the state and the
+/// position, for a restart file.
+using SimulationCheckpoint = std::function<void(const State&, const SimulationPosition&)>;
+
 class Simulation {
  public:
   Simulation(Dae& dae, ChannelList channels, Integrator& integrator, SimulationSettings settings);
 
   void add_recorder(Recorder& recorder) { recorders_.push_back(&recorder); }
   void set_progress(SimulationProgress progress) { progress_ = std::move(progress); }
+  /// Restart files: sink is called after every `every_rows` output rows.
+  void set_checkpoint(long every_rows, SimulationCheckpoint sink) {
+    checkpoint_every_ = every_rows;
+    checkpoint_ = std::move(sink);
+  }
 
   /// Runs from state.t for settings.duration. Throws SolverError on failure, after
   /// flushing every recorder.
   SimulationReport run(State& state);
+  /// Continues a saved run from its position: the state, the integrator (restore()), the
+  /// forces and the recorders (restore()) are already those of the checkpoint; no start,
+  /// no first row.
+  SimulationReport resume(State& state, const SimulationPosition& position);
 
   /// Number of steps per output row.
   long steps_per_output() const { return every_; }
 
  private:
   void record(State& state);
+  SimulationReport loop(State& state, SimulationPosition pos, bool fresh);
 
   Dae& dae_;
   ChannelList channels_;
@@ -64,6 +93,8 @@ class Simulation {
   SimulationSettings settings_;
   std::vector<Recorder*> recorders_;
   SimulationProgress progress_;
+  SimulationCheckpoint checkpoint_;
+  long checkpoint_every_ = 0;
   long every_ = 1;
   int levels_ = 0;  // adaptive: the step may be halved this many times
   State saved_;     // the state before the step, for a retry
