@@ -67,6 +67,15 @@ State statics(io::Model& m) {
   return s;
 }
 
+// the model's dynamics from its static equilibrium, every output row in memory
+SimulationReport run_dynamics(io::Model& m, MemoryRecorder& rec) {
+  State s = statics(m);
+  auto integrator = m.dynamics->make_integrator();
+  Simulation sim(*m.system, io::model_channels(m), *integrator, m.dynamics->simulation());
+  sim.add_recorder(rec);
+  return sim.run(s);
+}
+
 }  // namespace
 
 TEST(DrillingRig, StaticTensionAndSeabedBalance) {
@@ -137,12 +146,8 @@ TEST(DrillingRig, TwoHundredSecondsWithoutFailedSteps) {
   for (const char* name : {"drilling_rig.yaml", "drilling_rig_current.yaml"}) {
     SCOPED_TRACE(name);
     io::Model m = io::load_model_text(example_text(name), name);
-    State s = statics(m);
-    auto integrator = m.dynamics->make_integrator();
-    Simulation sim(*m.system, io::model_channels(m), *integrator, m.dynamics->simulation());
     MemoryRecorder rec;
-    sim.add_recorder(rec);
-    const SimulationReport rep = sim.run(s);
+    const SimulationReport rep = run_dynamics(m, rec);
     std::printf("\n  %s: %ld steps, %ld rejected, max constraint violation %.2e\n", name, rep.steps,
                 rep.rejected_steps, rep.max_constraint_violation);
     EXPECT_NEAR(rep.end_time, 200.0, 1e-9);
@@ -195,12 +200,8 @@ TEST(BargeRiser, StaticSinkageIsTheIndeterminateSolution) {
 TEST(BargeRiser, FiveElementsFollowTheConvergedRiser) {
   auto surge = [](int n) {
     io::Model m = with_elements("barge_riser.yaml", 5, n);
-    State s = statics(m);
-    auto integrator = m.dynamics->make_integrator();
-    Simulation sim(*m.system, io::model_channels(m), *integrator, m.dynamics->simulation());
     MemoryRecorder rec;
-    sim.add_recorder(rec);
-    const SimulationReport rep = sim.run(s);
+    const SimulationReport rep = run_dynamics(m, rec);
     EXPECT_EQ(rep.rejected_steps, 0);
     EXPECT_LT(rep.max_constraint_violation, 1e-6);
     std::vector<double> x;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/forces/line_force.hpp"
 
 namespace seaflex {
 
@@ -112,29 +113,10 @@ void PneumaticCylinder::assemble(const State& state, double, AssemblyTarget& tar
   const double P = gas_.pressure_at(c);
   // tension (spring convention): T = F_friction(L', P) - P A
   const double T = friction_.force(Ld, P) - P * gas_.piston_area;
-  const Vec3 f = T * n;  // force on a; -f on b: Q = -J_d^T f
-  const Index m = static_cast<Index>(dofs.size());
-  if (target.forces)
-    for (Index i = 0; i < m; ++i) (*target.forces)[dofs[i]] -= d.J.col(i).dot(f);
-  if (!target.matrix) return;
-  const MatrixScales& k = target.scales;
   // dP/dL = -dP/dc
   const double dPdL = -gas_.pressure_slope(c);
   const double dTdL = (friction_.dforce_dpressure(Ld, P) - gas_.piston_area) * dPdL;
-  const double dTdLd = friction_.dforce_dv(Ld, P);
-  PairSquare A = PairSquare::Zero(m, m);
-  if (k.kq != 0.0) {
-    const Mat3 Pn = Mat3::Identity() - n * n.transpose();
-    // df/dd with d' held; L' = n . d' depends on d through n
-    const Mat3 dfdd =
-        dTdL * n * n.transpose() + (T / L) * Pn + dTdLd * n * (Pn * d.rate).transpose() / L;
-    const Mat3 dfdrate = dTdLd * n * n.transpose();
-    PairSquare dQ = -(d.J.transpose() * dfdd * d.J + d.J.transpose() * dfdrate * d.Jv);
-    pair_.add_hessian(MarkerVector::kPoint, -1.0, 1.0, state, -f, dQ);
-    A -= k.kq * dQ;
-  }
-  if (k.kv != 0.0) A += k.kv * dTdLd * d.J.transpose() * n * n.transpose() * d.J;  // -kv dQ/dv
-  target.matrix->add(block_, A);
+  assemble_line_force(pair_, d, {T, dTdL, friction_.dforce_dv(Ld, P)}, state, block_, target);
 }
 
 double PneumaticCylinder::potential_energy(const State& state) const {

@@ -1,6 +1,7 @@
 #include "seaflex/forces/spring_damper.hpp"
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/forces/line_force.hpp"
 
 #include <fmt/format.h>
 
@@ -106,27 +107,8 @@ void SpringDamper::assemble(const State& state, double, AssemblyTarget& target) 
   const double Ld = n.dot(d.rate);
   const double T = law_.tension(L - free_length_) + damping_ * Ld;
   if (slack_ && T <= 0.0) return;  // a rope cannot push, even while it shortens fast
-  const Vec3 f = T * n;            // force on a; -f on b: Q = -J_d^T f
-  const Index m = static_cast<Index>(dofs.size());
-  if (target.forces)
-    for (Index i = 0; i < m; ++i) (*target.forces)[dofs[i]] -= d.J.col(i).dot(f);
-  if (!target.matrix) return;
-  const MatrixScales& k = target.scales;
-  PairSquare A = PairSquare::Zero(m, m);
-  if (k.kq != 0.0) {
-    const Mat3 P = Mat3::Identity() - n * n.transpose();
-    // df/dd with d' held; L' = n . d' depends on d through n
-    const Mat3 dfdd = law_.stiffness(L - free_length_) * n * n.transpose() + (T / L) * P +
-                      damping_ * n * (P * d.rate).transpose() / L;
-    const Mat3 dfdrate = damping_ * n * n.transpose();
-    // dQ/dq = -(J^T df/dd J + d(J^T f)/dq + J^T df/dd' d(d')/dq)
-    PairSquare dQ = -(d.J.transpose() * dfdd * d.J + d.J.transpose() * dfdrate * d.Jv);
-    pair_.add_hessian(MarkerVector::kPoint, -1.0, 1.0, state, -f, dQ);
-    A -= k.kq * dQ;
-  }
-  if (k.kv != 0.0 && damping_ != 0.0)
-    A += k.kv * damping_ * d.J.transpose() * n * n.transpose() * d.J;  // -kv dQ/dv
-  target.matrix->add(block_, A);
+  assemble_line_force(pair_, d, {T, law_.stiffness(L - free_length_), damping_}, state, block_,
+                      target);
 }
 
 double SpringDamper::potential_energy(const State& state) const {
