@@ -192,11 +192,12 @@ const AncfPlate* plate_of(const YAML::Node& support, const LoadContext& ctx, boo
   if (std::find(failed.begin(), failed.end(), b.Scalar()) != failed.end()) {
     // a body that could not be built (reported there): a support written for a plate is
     // not checked against it
+    // (a missing key is a zombie node, on which IsScalar() throws: IsDefined() first)
     const YAML::Node type = support["type"], node = support["node"];
     *skip = support["edges"].IsDefined() || support["in_plane"].IsDefined() ||
-            (type.IsScalar() && type.Scalar() == "simply_supported") ||
-            (node.IsScalar() && node.Scalar().size() > 1 && node.Scalar()[0] == 'n' &&
-             node.Scalar().find('_') != std::string::npos);
+            (type.IsDefined() && type.IsScalar() && type.Scalar() == "simply_supported") ||
+            (node.IsDefined() && node.IsScalar() && node.Scalar().size() > 1 &&
+             node.Scalar()[0] == 'n' && node.Scalar().find('_') != std::string::npos);
     return nullptr;
   }
   return dynamic_cast<const AncfPlate*>(ctx.system.find_body(b.Scalar()));
