@@ -271,7 +271,23 @@ void load_bodies(const YAML::Node& node, LoadContext& ctx) {
   MapReader bodies(ctx.diag, node, "bodies");
   if (!bodies.valid()) return;
   if (node.size() == 0) bodies.error("", "the model has no bodies");
+  // a bound on the model's size, so that no model file can exhaust the memory: 2e6
+  // coordinates (333,000 beam elements) take about 2 GB in the Newton matrix. Checked
+  // body by body (each is bounded too), so that building stops before it is exceeded.
+  constexpr long kMaxCoordinates = 2000000;
+  long coordinates = 0;
+  bool too_big = false;
   for (const auto& kv : node) {
+    if (coordinates > kMaxCoordinates) {
+      if (!too_big)
+        ctx.diag.error(kv.first.Mark(), "bodies." + kv.first.Scalar(),
+                       fmt::format("the bodies before this one have {} coordinates together, "
+                                   "more than the limit of {:g}: use fewer elements",
+                                   coordinates, static_cast<double>(kMaxCoordinates)));
+      too_big = true;
+      ctx.failed_bodies.push_back(kv.first.Scalar());  // references to it are not reported
+      continue;
+    }
     const std::string name = kv.first.Scalar();
     bodies.has(name);  // every entry is a body: no unknown keys at this level
     const std::string path = "bodies." + name;
@@ -299,9 +315,10 @@ void load_bodies(const YAML::Node& node, LoadContext& ctx) {
     }
     std::unique_ptr<Body> body = body_builders().at(*type)(r, name, ctx);
     r.finish();
-    if (body && !ctx.system.find_body(name))
+    if (body && !ctx.system.find_body(name)) {
+      coordinates += body->num_coordinates();
       ctx.system.add_body(std::move(body));
-    else
+    } else
       ctx.failed_bodies.push_back(name);
   }
 }
