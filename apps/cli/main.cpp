@@ -323,10 +323,8 @@ std::string file_text(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Checkpoints every `rows` output rows into DIR/checkpoint.txt, or refuses a model or
-// output that a restart file cannot hold yet.
-void enable_checkpoints(Simulation& sim, const io::Model& model, const std::string& file,
-                        const fs::path& dir, long rows, Integrator& integrator, Outputs& outputs) {
+// A model or output that a restart file cannot hold yet is refused before anything runs.
+void check_checkpointable(const io::Model& model, const std::string& file) {
   for (const auto& f : model.system->forces())
     if (f->has_memory())
       throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
@@ -337,6 +335,11 @@ void enable_checkpoints(Simulation& sim, const io::Model& model, const std::stri
     throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
                                  "restart files continue CSV results only; use --format csv "
                                  "and no VTK output with checkpoints"}});
+}
+
+// Checkpoints every `rows` output rows into DIR/checkpoint.txt.
+void enable_checkpoints(Simulation& sim, const std::string& file, const fs::path& dir, long rows,
+                        Integrator& integrator, Outputs& outputs) {
   const std::string model_path = fs::absolute(file).string();
   const std::string hash = fnv1a(file_text(file));
   sim.set_checkpoint(rows,
@@ -417,6 +420,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
                                  "see docs/model-format.md"}});
   const auto& d = *model.dynamics;
   const long rows = checkpoint_every > 0.0 ? checkpoint_rows(d, checkpoint_every, file) : 0;
+  if (rows > 0) check_checkpointable(model, file);
   make_output_dir(dir);
   clear_results(model, dir);
   State state =
@@ -425,7 +429,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
   Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
   Outputs outputs(model, dir, "timeseries", true);
   outputs.attach(sim);
-  if (rows > 0) enable_checkpoints(sim, model, file, dir, rows, *integrator, outputs);
+  if (rows > 0) enable_checkpoints(sim, file, dir, rows, *integrator, outputs);
   return simulate(sim, state, model, dir, outputs, quiet, nullptr);
 }
 
@@ -445,6 +449,7 @@ int cmd_resume(const fs::path& dir, bool quiet) {
   const io::Model model = load_model(file, options);
   if (!model.dynamics)
     throw InputError({Diagnostic{file, 0, 0, "dynamics", "the model has no dynamics section"}});
+  check_checkpointable(model, file);
   const auto& d = *model.dynamics;
   auto integrator = d.make_integrator();
   Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
@@ -461,7 +466,7 @@ int cmd_resume(const fs::path& dir, bool quiet) {
     throw InputError({Diagnostic{path, 0, 0, "state", "the checkpoint is for another model"}});
   integrator->restore(*model.system, in);
   const SimulationPosition pos = SimulationPosition::load(in);
-  enable_checkpoints(sim, model, file, dir, in.integer("checkpoint_rows"), *integrator, outputs);
+  enable_checkpoints(sim, file, dir, in.integer("checkpoint_rows"), *integrator, outputs);
   if (!quiet) fmt::print("resuming {} at t = {:g} s\n", file, state.t);
   return simulate(sim, state, model, dir, outputs, quiet, &pos);
 }
