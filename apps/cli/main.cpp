@@ -354,6 +354,7 @@ void enable_checkpoints(Simulation& sim, const std::string& file, const fs::path
                        w.put("state.q", state.q);
                        w.put("state.v", state.v);
                        w.put("state.lambda", state.lambda);
+                       w.put("state.z", state.z);
                        if (!integrator.save(w) || !outputs.save(w))
                          throw std::runtime_error("this run cannot be checkpointed");
                        w.write((dir / "checkpoint.txt").string());
@@ -461,6 +462,7 @@ int cmd_resume(const fs::path& dir, bool quiet) {
   state.q = in.vector("state.q");
   state.v = in.vector("state.v");
   state.lambda = in.vector("state.lambda");
+  state.z = in.vector("state.z");
   if (state.q.size() != model.system->num_coordinates() ||
       state.lambda.size() != model.system->num_constraints())
     throw InputError({Diagnostic{path, 0, 0, "state", "the checkpoint is for another model"}});
