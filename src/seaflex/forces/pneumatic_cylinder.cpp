@@ -54,22 +54,10 @@ double StribeckFriction::dforce_dpressure(double v, double p) const {
 PneumaticCylinder::PneumaticCylinder(std::string name, std::unique_ptr<Marker> a,
                                      std::unique_ptr<Marker> b, GasSpringLaw gas,
                                      StribeckFriction friction)
-    : Force(std::move(name)), pair_(std::move(a), std::move(b)), gas_(gas), friction_(friction) {}
-
-void PneumaticCylinder::declare_blocks(math::SparseBlockAssembler& matrix) {
-  const auto& dofs = pair_.bind();
-  block_ = dofs.empty() ? -1 : matrix.declare_block(dofs, dofs);
-}
-
-double PneumaticCylinder::length(const State& state) const {
-  return (pair_.b().position(state) - pair_.a().position(state)).norm();
-}
+    : LineForce(std::move(name), std::move(a), std::move(b)), gas_(gas), friction_(friction) {}
 
 double PneumaticCylinder::extension_rate(const State& state) const {
-  PairVectorEval d;
-  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
-  const double L = d.value.norm();
-  return L > 0.0 ? d.value.dot(d.rate) / L : 0.0;
+  return line(state).rate;
 }
 
 double PneumaticCylinder::pressure(const State& state) const {
@@ -89,16 +77,9 @@ double PneumaticCylinder::dissipation(const State& state) const {
 }
 
 void PneumaticCylinder::assemble(const State& state, double, AssemblyTarget& target) const {
-  const auto& dofs = pair_.dofs();
-  if (dofs.empty()) return;
-  PairVectorEval d;
-  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
-  const double L = d.value.norm();
-  if (!(L > 0.0))
-    throw SolverError(fmt::format("t = {:.6g} s: the end points of cylinder {} met, so its line "
-                                  "of action is undefined",
-                                  state.t, name()),
-                      state.t);
+  if (!has_coordinates()) return;
+  const LineState s = line_for_assembly(state, "cylinder");
+  const double L = s.length, Ld = s.rate;
   const double c = compression(L);
   const double V = gas_.gas_volume(c);
   if (!(V > 0.01 * gas_.volume))
@@ -108,15 +89,13 @@ void PneumaticCylinder::assemble(const State& state, double, AssemblyTarget& tar
                     "the tensioner can hold, or the gas volume is too small)",
                     state.t, name(), c, V / gas_.volume),
         state.t);
-  const Vec3 n = d.value / L;
-  const double Ld = n.dot(d.rate);
   const double P = gas_.pressure_at(c);
   // tension (spring convention): T = F_friction(L', P) - P A
   const double T = friction_.force(Ld, P) - P * gas_.piston_area;
   // dP/dL = -dP/dc
   const double dPdL = -gas_.pressure_slope(c);
   const double dTdL = (friction_.dforce_dpressure(Ld, P) - gas_.piston_area) * dPdL;
-  assemble_line_force(pair_, d, {T, dTdL, friction_.dforce_dv(Ld, P)}, state, block_, target);
+  assemble_line(s, {T, dTdL, friction_.dforce_dv(Ld, P)}, state, target);
 }
 
 double PneumaticCylinder::potential_energy(const State& state) const {

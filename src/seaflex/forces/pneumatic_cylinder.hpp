@@ -24,8 +24,7 @@
 
 #include <memory>
 
-#include "seaflex/model/force.hpp"
-#include "seaflex/model/marker_pair.hpp"
+#include "seaflex/forces/line_force.hpp"
 
 namespace seaflex {
 
@@ -60,7 +59,7 @@ struct StribeckFriction {
   double dforce_dpressure(double v, double pressure) const;
 };
 
-class PneumaticCylinder : public Force {
+class PneumaticCylinder : public LineForce {
  public:
   PneumaticCylinder(std::string name, std::unique_ptr<Marker> a, std::unique_ptr<Marker> b,
                     GasSpringLaw gas, StribeckFriction friction);
@@ -69,12 +68,10 @@ class PneumaticCylinder : public Force {
   void set_reference_length(double length) { reference_length_ = length; }
   double reference_length() const { return reference_length_; }
 
-  void declare_blocks(math::SparseBlockAssembler& matrix) override;
   void assemble(const State& state, double load_factor, AssemblyTarget& target) const override;
   double potential_energy(const State& state) const override;
   void add_channels(ChannelList& channels) const override;
 
-  double length(const State& state) const;
   double extension_rate(const State& state) const;  ///< L' (m/s)
   double pressure(const State& state) const;        ///< P (Pa)
   double friction(const State& state) const;        ///< friction force (N), opposing L'
@@ -88,11 +85,9 @@ class PneumaticCylinder : public Force {
 
  private:
   double compression(double length) const { return reference_length_ - length; }
-  MarkerPair pair_;
   GasSpringLaw gas_;
   StribeckFriction friction_;
   double reference_length_ = 0.0;
-  math::BlockId block_ = -1;
 };
 
 }  // namespace seaflex

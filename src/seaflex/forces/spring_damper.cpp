@@ -64,51 +64,26 @@ double SpringLaw::energy(double x) const {
 
 SpringDamper::SpringDamper(std::string name, std::unique_ptr<Marker> a, std::unique_ptr<Marker> b,
                            double free_length, SpringLaw law, double damping, bool slack)
-    : Force(std::move(name)),
-      pair_(std::move(a), std::move(b)),
+    : LineForce(std::move(name), std::move(a), std::move(b)),
       free_length_(free_length),
       law_(std::move(law)),
       damping_(damping),
       slack_(slack) {}
 
-void SpringDamper::declare_blocks(math::SparseBlockAssembler& matrix) {
-  const auto& dofs = pair_.bind();
-  block_ = dofs.empty() ? -1 : matrix.declare_block(dofs, dofs);
-}
-
-double SpringDamper::length(const State& state) const {
-  return (pair_.b().position(state) - pair_.a().position(state)).norm();
-}
-
 double SpringDamper::tension(const State& state) const {
-  PairVectorEval d;
-  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
-  const double L = d.value.norm();
-  if (slack_ && L < free_length_) return 0.0;
-  const double Ld = L > 0.0 ? d.value.dot(d.rate) / L : 0.0;
-  const double T = law_.tension(L - free_length_) + damping_ * Ld;
+  const LineState s = line(state);
+  if (slack_ && s.length < free_length_) return 0.0;
+  const double T = law_.tension(s.length - free_length_) + damping_ * s.rate;
   return slack_ ? std::max(T, 0.0) : T;
 }
 
 void SpringDamper::assemble(const State& state, double, AssemblyTarget& target) const {
-  const auto& dofs = pair_.dofs();
-  if (dofs.empty()) return;
-  PairVectorEval d;
-  pair_.evaluate(MarkerVector::kPoint, -1.0, 1.0, state, d);
-  const double L = d.value.norm();
-  if (!(L > 0.0))
-    throw SolverError(
-        fmt::format("t = {:.6g} s: the end points of spring {} met, so its line of action is "
-                    "undefined",
-                    state.t, name()),
-        state.t);
-  if (slack_ && L < free_length_) return;
-  const Vec3 n = d.value / L;
-  const double Ld = n.dot(d.rate);
-  const double T = law_.tension(L - free_length_) + damping_ * Ld;
+  if (!has_coordinates()) return;
+  const LineState s = line_for_assembly(state, "spring");
+  if (slack_ && s.length < free_length_) return;
+  const double T = law_.tension(s.length - free_length_) + damping_ * s.rate;
   if (slack_ && T <= 0.0) return;  // a rope cannot push, even while it shortens fast
-  assemble_line_force(pair_, d, {T, law_.stiffness(L - free_length_), damping_}, state, block_,
-                      target);
+  assemble_line(s, {T, law_.stiffness(s.length - free_length_), damping_}, state, target);
 }
 
 double SpringDamper::potential_energy(const State& state) const {

@@ -10,8 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "seaflex/model/force.hpp"
-#include "seaflex/model/marker_pair.hpp"
+#include "seaflex/forces/line_force.hpp"
 
 namespace seaflex {
 
@@ -33,26 +32,22 @@ class SpringLaw {
   std::vector<double> x_, t_;
 };
 
-class SpringDamper : public Force {
+class SpringDamper : public LineForce {
  public:
   SpringDamper(std::string name, std::unique_ptr<Marker> a, std::unique_ptr<Marker> b,
                double free_length, SpringLaw law, double damping, bool slack);
 
-  void declare_blocks(math::SparseBlockAssembler& matrix) override;
   void assemble(const State& state, double load_factor, AssemblyTarget& target) const override;
   double potential_energy(const State& state) const override;
   void add_channels(ChannelList& channels) const override;
 
-  double length(const State& state) const;
   double tension(const State& state) const;
 
  private:
-  MarkerPair pair_;
   double free_length_;
   SpringLaw law_;
   double damping_;
   bool slack_;
-  math::BlockId block_ = -1;
 };
 
 }  // namespace seaflex
