@@ -13,17 +13,12 @@ import re
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 import unittest
 
-SEAFLEX = sys.argv[1] if len(sys.argv) > 1 else "build/seaflex"
-SRC = sys.argv[2] if len(sys.argv) > 2 else "."
+from cli_support import SEAFLEX, SRC, TempDirCase, run
+
 EXAMPLES = os.path.join(SRC, "examples")
-
-
-def run(*args, timeout=300):
-    return subprocess.run([SEAFLEX, *args], capture_output=True, text=True, timeout=timeout)
 
 
 def read_csv(path):
@@ -64,19 +59,7 @@ statics: {load_steps: 2}
 REACTIONS = ["hook.fx", "hook.fy", "hook.fz", "hook.mx", "hook.my", "hook.mz"]
 
 
-class Cli(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def model(self, text, name="model.yaml"):
-        path = os.path.join(self.dir, name)
-        with open(path, "w") as f:
-            f.write(text)
-        return path
+class Cli(TempDirCase):
 
     def test_check_every_example(self):
         for name in sorted(os.listdir(EXAMPLES)):

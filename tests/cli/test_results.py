@@ -13,7 +13,6 @@ import os
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 import unittest
 
@@ -24,12 +23,7 @@ import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
-SEAFLEX = sys.argv[1] if len(sys.argv) > 1 else "build/seaflex"
-SRC = sys.argv[2] if len(sys.argv) > 2 else "."
-
-
-def run(*args, timeout=300):
-    return subprocess.run([SEAFLEX, *args], capture_output=True, text=True, timeout=timeout)
+from cli_support import SEAFLEX, SRC, TempDirCase, run
 
 
 def read_csv(path):
@@ -71,19 +65,7 @@ dynamics:
 """
 
 
-class Results(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def model(self, text, name="model.yaml"):
-        path = os.path.join(self.dir, name)
-        with open(path, "w") as f:
-            f.write(text)
-        return path
+class Results(TempDirCase):
 
     def test_hdf5_holds_the_csv_numbers(self):
         out = os.path.join(self.dir, "out")
