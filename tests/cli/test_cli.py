@@ -481,7 +481,7 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
             text = f.read()
         for old, new in [("elements: 20 ", "elements: 80 "),
                          ("ramp: {start: 5, duration: 30}", "ramp: {start: 0, duration: 1}"),
-                         ("time_step: 8.0e-4 ", "time_step: 1.0e-4 "),
+                         ("time_step: 0.05 ", "time_step: 0.005 "),
                          ("duration: 45 ", "duration: 0.05 "),
                          ("output_interval: 0.5", "output_interval: 0.005")]:
             self.assertIn(old, text)

@@ -69,6 +69,14 @@ void RigidBody::assemble(const State& state, AssemblyTarget& target) const {
   if (k.kv != 0.0)
     A.bottomRightCorner<4, 4>() +=
         k.kv * 8.0 * (gbar_transpose_times(w) + Gbd.transpose() * inertia_ * Gb);
+  if (k.kq != 0.0 && target.acceleration) {
+    // d(M a)/dp of M_pp = 4 Gbar(p)^T J' Gbar(p): with Gbar(p) a_p = -Gbar(a_p) p and
+    // Gbar(p)^T x = B(x) p, d(M a)/dp = 4 (B(J' Gbar(p) a_p) - Gbar(p)^T J' Gbar(a_p))
+    const Vec4 ap = target.acceleration->segment<4>(offset() + 3);
+    A.bottomRightCorner<4, 4>() += k.kq * 4.0 *
+                                   (gbar_transpose_times(inertia_ * (Gb * ap)) -
+                                    Gb.transpose() * inertia_ * math::euler_gbar(ap));
+  }
   target.matrix->add(block_, A);
 }
 

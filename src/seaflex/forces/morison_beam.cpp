@@ -128,6 +128,18 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         const Vec3 tt = rp.normalized();
         add_kron(K, sh, sh, ca_mass * (Mat3::Identity() - tt * tt.transpose()), s.km * dx);
       }
+      if (s.kq != 0.0 && ca_mass != 0.0 && target.acceleration) {
+        // the added mass turns with the axis: d/dr' [ca (I - t t^T) a] with t = r'/|r'|,
+        // dt/dr' = (I - t t^T)/|r'|, is -ca (t a^T + (t.a) I) (I - t t^T)/|r'|
+        const Vec12 ea = target.acceleration->segment<12>(beam_.node_index(k));
+        const Vec3 ax = ancf_cable::as_nodes(ea) * sh;
+        const double stretch = rp.norm();
+        const Vec3 tt = rp / stretch;
+        const Mat3 P = Mat3::Identity() - tt * tt.transpose();
+        const Mat3 D =
+            -ca_mass * (tt * ax.transpose() + tt.dot(ax) * Mat3::Identity()) * P / stretch;
+        add_kron(K, sh, shx, D, s.kq * dx);
+      }
       if (s.kv != 0.0) add_kron(K, sh, sh, pl.df_dv, -s.kv * dx);
       if (s.kq != 0.0) {
         add_kron(K, sh, shx, pl.df_drp, -s.kq * dx);

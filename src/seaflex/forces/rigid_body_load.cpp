@@ -78,6 +78,24 @@ void RigidBodyLoad::assemble(const State& state, double load_factor, AssemblyTar
     J.block<3, 4>(3, 3) = 2.0 * math::euler_g(q.tail<4>());
     A += s.km * J.transpose() * added_mass(motion_of(q, v, state.t)) * J;
   }
+  if (s.kq != 0.0 && has_added_mass() && target.acceleration) {
+    // the added mass turns with the body: d(M_a(q) a)/dq by central differences
+    const Vec7 a = target.acceleration->segment<7>(o);
+    auto mass_times = [&](const Vec7& qq) {
+      Eigen::Matrix<double, 6, 7> J = Eigen::Matrix<double, 6, 7>::Zero();
+      J.block<3, 3>(0, 0).setIdentity();
+      J.block<3, 4>(3, 3) = 2.0 * math::euler_g(qq.tail<4>());
+      return Vec7(J.transpose() * (added_mass(motion_of(qq, v, state.t)) * (J * a)));
+    };
+    const double hr = 1e-6 * std::max(1.0, q.head<3>().lpNorm<Eigen::Infinity>());
+    for (int i = 0; i < 7; ++i) {
+      const double h = i < 3 ? hr : 1e-7;
+      Vec7 qp = q, qm = q;
+      qp[i] += h;
+      qm[i] -= h;
+      A.col(i) += s.kq * (mass_times(qp) - mass_times(qm)) / (2.0 * h);
+    }
+  }
   // central differences of Q over the body's coordinates and velocities
   const double hr = 1e-6 * std::max(1.0, q.head<3>().lpNorm<Eigen::Infinity>());
   if (s.kq != 0.0) {

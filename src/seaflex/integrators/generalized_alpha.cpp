@@ -13,6 +13,8 @@ namespace seaflex {
 
 namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+// a step with a reused matrix that needs more iterations than this refactors the next
+constexpr int kRefreshIterations = 3;
 }  // namespace
 
 GeneralizedAlphaSettings GeneralizedAlphaSettings::from_rho_inf(double rho) {
@@ -47,6 +49,8 @@ GeneralizedAlpha::GeneralizedAlpha(GeneralizedAlphaSettings settings)
     throw std::invalid_argument("generalized-alpha: need alpha_m, alpha_f < 1 and beta, gamma > 0");
   if (s_.max_iterations < 1 || !(s_.tolerance > 0.0))
     throw std::invalid_argument("generalized-alpha: need max_iterations >= 1, tolerance > 0");
+  if (!(s_.refresh_rate > 0.0 && s_.refresh_rate < 1.0))
+    throw std::invalid_argument("generalized-alpha: refresh_rate must lie in (0, 1)");
 }
 
 void GeneralizedAlpha::prepare(const Dae& dae) {
@@ -55,9 +59,13 @@ void GeneralizedAlpha::prepare(const Dae& dae) {
   eval_ = dae.make_eval();
   constant_mass_ = dae.constant_mass();
   if (!constant_mass_) mass_eval_ = dae.make_eval();
-  for (VecX* x : {&a_n_, &abar_n_, &a_, &abar_, &Ma_}) *x = VecX::Zero(n_);
+  if (m_ > 0 && s_.constraints == ConstraintLevel::kStabilizedIndex2)
+    projection_eval_ = dae.make_eval();
+  for (VecX* x : {&a_n_, &abar_n_, &a_, &abar_, &Ma_, &corr_, &factored_a_}) *x = VecX::Zero(n_);
   rhs_ = VecX::Zero(n_ + m_);
   sol_ = VecX::Zero(n_ + m_);
+  eta_ = VecX::Zero(m_);
+  dy_ = VecX::Zero(n_);
   prepared_ = true;
 }
 
@@ -85,21 +93,42 @@ void GeneralizedAlpha::start(const Dae& dae, State& state) {
   a_n_ = sol_.head(n_);
   abar_n_ = a_n_;  // Arnold & Bruls (2007) eq. (10): abar_0 = a_0
   state.lambda = sol_.tail(m_);
+  // the model's acceleration and force scales: the initial accelerations, and each
+  // coordinate's applied force and constraint reaction over its mass (a model at rest in
+  // equilibrium has a = 0 but carries its weight through the reactions)
+  const SpMat& K0 = eval_.kkt.matrix();
+  VecX reaction = VecX::Zero(n_);
+  for (Index j = 0; j < n_; ++j)
+    for (SpMat::InnerIterator it(K0, j); it; ++it)
+      if (it.row() >= n_) reaction[j] += it.value() * state.lambda[it.row() - n_];
+  a_scale_ = n_ > 0 ? a_n_.lpNorm<Eigen::Infinity>() : 0.0;
+  f_scale_ = m_ > 0 ? state.lambda.lpNorm<Eigen::Infinity>() : 0.0;
+  for (Index j = 0; j < n_; ++j) {
+    const double f = std::abs(eval_.Q[j]) + std::abs(reaction[j]);
+    f_scale_ = std::max(f_scale_, f);
+    const double mjj = K0.coeff(j, j);
+    if (mjj > 0.0) a_scale_ = std::max(a_scale_, f / mjj);
+  }
   factored_h_ = 0.0;
+  projection_ready_ = false;
   started_ = true;
 }
 
 bool GeneralizedAlpha::save(CheckpointWriter& out) const {
   out.put("ga.started", static_cast<long>(started_));
   out.put("ga.q_scale", q_scale_);
+  out.put("ga.a_scale", a_scale_);
+  out.put("ga.f_scale", f_scale_);
   out.put("ga.a_n", a_n_);
   out.put("ga.abar_n", abar_n_);
   out.put("ga.factored_h", factored_h_);
+  out.put("ga.refresh_next", static_cast<long>(refresh_next_));
   if (factored_h_ > 0.0) {
     out.put("ga.factored_at.t", factored_at_.t);
     out.put("ga.factored_at.q", factored_at_.q);
     out.put("ga.factored_at.v", factored_at_.v);
     out.put("ga.factored_at.lambda", factored_at_.lambda);
+    out.put("ga.factored_a", factored_a_);
   }
   return true;
 }
@@ -108,9 +137,13 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
   if (!prepared_) prepare(dae);
   started_ = in.integer("ga.started") != 0;
   q_scale_ = in.number("ga.q_scale");
+  a_scale_ = in.number("ga.a_scale");
+  f_scale_ = in.number("ga.f_scale");
   a_n_ = in.vector("ga.a_n");
   abar_n_ = in.vector("ga.abar_n");
   factored_h_ = in.number("ga.factored_h");
+  refresh_next_ = in.integer("ga.refresh_next") != 0;
+  projection_ready_ = false;
   if (a_n_.size() != n_ || abar_n_.size() != n_)
     throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
   if (factored_h_ > 0.0) {
@@ -118,6 +151,10 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
     factored_at_.q = in.vector("ga.factored_at.q");
     factored_at_.v = in.vector("ga.factored_at.v");
     factored_at_.lambda = in.vector("ga.factored_at.lambda");
+    factored_a_ = in.vector("ga.factored_a");
+    if (factored_at_.q.size() != n_ || factored_at_.v.size() != n_ ||
+        factored_at_.lambda.size() != m_ || factored_a_.size() != n_)
+      throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
     // the same matrix at the same iterate, factored again: modified Newton goes on with
     // exactly the matrix the saved run had
     const double h = factored_h_;
@@ -128,6 +165,7 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
     req.matrix = true;
     req.scales = MatrixScales{1.0, 1.0 / bp, gp / bp};
     req.multiplier_hessian = true;
+    req.acceleration = &factored_a_;
     instrumented::evaluate(dae, factored_at_, req, eval_, stats_);
     if (constant_mass_) {
       DaeRequest mreq;
@@ -155,12 +193,12 @@ void GeneralizedAlpha::update_iterate(const State& state_n, double h) {
   const double am = s_.alpha_m, af = s_.alpha_f;
   // Arnold & Bruls (2007) eq. (7)-(9)
   abar_ = ((1.0 - af) * a_ + af * a_n_ - am * abar_n_) / (1.0 - am);
-  trial_.q =
-      state_n.q + h * state_n.v + (h * h * (0.5 - s_.beta)) * abar_n_ + (h * h * s_.beta) * abar_;
+  trial_.q = state_n.q + h * state_n.v + (h * h * (0.5 - s_.beta)) * abar_n_ +
+             (h * h * s_.beta) * abar_ + corr_;
   trial_.v = state_n.v + (h * (1.0 - s_.gamma)) * abar_n_ + (h * s_.gamma) * abar_;
 }
 
-void GeneralizedAlpha::predict() {
+void GeneralizedAlpha::predict_coasting() {
   const double am = s_.alpha_m, af = s_.alpha_f;
   // abar_{n+1} = -(1/2 - beta)/beta abar_n, and a_{n+1} from eq. (9) of Arnold & Bruls
   const double c = -(0.5 - s_.beta) / s_.beta;
@@ -188,43 +226,88 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
       if (it.row() < n_) out[it.row()] += it.value() * a[j];
 }
 
+void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
+  // C_q(q_n) alone: no forces, no mass (the bodies assemble nothing with zero scales)
+  DaeRequest req;
+  req.forces = false;
+  req.matrix = true;
+  req.scales = MatrixScales{0.0, 0.0, 0.0};
+  instrumented::evaluate(dae, state, req, projection_eval_, stats_);
+  constraint_jacobian_ = projection_eval_.kkt.matrix().bottomLeftCorner(m_, n_);
+  const SpMat BBt = constraint_jacobian_ * constraint_jacobian_.transpose();
+  if (!projection_analyzed_) {
+    projection_solver_.analyzePattern(BBt);
+    projection_analyzed_ = true;
+  }
+  projection_solver_.factorize(BBt);
+  projection_ready_ = projection_solver_.info() == Eigen::Success;
+  if (!projection_ready_)
+    throw SolverError(
+        "the constraint rows are dependent (C_q C_q^T is singular): redundant joints or "
+        "supports; seaflex check names them",
+        state.t);
+}
+
 StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   if (!started_) start(dae, state);
   ++stats_.steps;
   StepReport report;
   const double bp = (1.0 - s_.alpha_m) / (s_.beta * h * h * (1.0 - s_.alpha_f));  // beta'
   const double gp = s_.gamma / (s_.beta * h);                                     // gamma'
-  const double tol = s_.tolerance * q_scale_;
-  trial_ = state;
-  trial_.t = state.t + h;
-  // predictor: the a_{n+1} for which q_{n+1} = q_n + h v_n (abar_{n+1} = -(1/2 - beta)/beta
-  // abar_n): the iterations start from where the body would coast, not from an
-  // extrapolation of accelerations, which after a sudden load (a tensioner switched on, a
-  // snap) carry the step far from the solution and make Newton diverge
-  predict();
-  bool want_fresh = s_.newton == NewtonMode::kFull || factored_h_ != h;
-  double previous = 0.0;       // |dq| of the previous update
-  double last_theta = 0.0;     // the previous contraction rate (0: none yet)
-  double first_norm = -1.0;    // |dq| of the step's first update
-  bool fresh_in_step = false;  // the matrix was factored during this step
-  int diverging = 0;           // consecutive growing updates with a fresh Jacobian
+  const bool index2 = s_.constraints == ConstraintLevel::kStabilizedIndex2 && m_ > 0;
   auto fail = [&](std::string message) {
     report.ok = false;
     report.message = std::move(message);
     return report;
   };
-  Index worst = 0;  // the coordinate of the largest component of the last update
-  // what is likely wrong when Newton fails, for the user
-  const char* cause =
+  trial_ = state;
+  trial_.t = state.t + h;
+  // predictor: the acceleration of the last step (a smooth motion changes it by O(h) per
+  // step, so the first update is small); when a stale matrix drives the iterate away from
+  // it (a sudden load, a snap) the iterations restart from where the body would coast
+  a_ = a_n_;
+  corr_.setZero();
+  if (index2 && !projection_ready_) {
+    try {
+      prepare_projection(dae, state);
+    } catch (const SolverError& e) {
+      return fail(e.what());
+    }
+  }
+  bool want_fresh = s_.newton == NewtonMode::kFull || factored_h_ != h || refresh_next_;
+  refresh_next_ = false;
+  double previous = 0.0;       // the previous update, in units of the tolerance
+  double last_theta = 0.0;     // the previous contraction rate (0: none yet)
+  double first_norm = -1.0;    // the step's first update, in units of the tolerance
+  bool fresh_in_step = false;  // the matrix was factored during this step
+  int diverging = 0;           // consecutive growing updates with a fresh Jacobian
+  bool coasting = false;       // restarted from the coasting predictor
+  // the last update: its largest acceleration component and coordinate, its largest
+  // multiplier component, the largest projection, and their tolerances
+  double last_da = 0.0, last_dl = 0.0, last_dy = 0.0, a_tol = 0.0, f_tol = 0.0, q_tol = 0.0;
+  Index worst = 0;
+  const char* diverge_cause =
       "the time step is too long for the motion (a sudden load, a line going slack or taut, "
       "an impact) or a stiffness changes abruptly; try step_control: adaptive or a shorter "
       "time_step";
+  int restart_at = 0;  // the iterations before the last restart from the predictor
   for (int it = 1;; ++it) {
-    if (it > s_.max_iterations)
-      return fail(
-          fmt::format("Newton did not converge in {} iterations (step {:g} s; last "
-                      "update {:.3g} m against a tolerance of {:.3g} m, largest at {}): {}",
-                      s_.max_iterations, h, previous, tol, dae.coordinate_name(worst), cause));
+    if (it - restart_at > s_.max_iterations) {
+      const bool contracting = last_theta > 0.0 && last_theta < 1.0;
+      return fail(fmt::format(
+          "Newton did not converge in {} iterations (step {:g} s): the last update of the "
+          "accelerations was {:.3g} (tolerance {:.3g}), largest at {}, of the multipliers "
+          "{:.3g} (tolerance {:.3g}){}: {}",
+          s_.max_iterations, h, last_da, a_tol, dae.coordinate_name(worst), last_dl, f_tol,
+          index2 ? fmt::format(", of the constraint projection {:.3g} m (tolerance {:.3g} m)",
+                               last_dy, q_tol)
+                 : std::string(),
+          contracting
+              ? fmt::format("the iterations converge, but slowly (each update {:.2g} times the "
+                            "previous); raise max_iterations, or use newton: full",
+                            last_theta)
+              : std::string(diverge_cause)));
+    }
     ++report.iterations;
     ++stats_.iterations;
     update_iterate(state, h);
@@ -235,6 +318,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       req.matrix = true;
       req.scales = MatrixScales{1.0, 1.0 / bp, gp / bp};
       req.multiplier_hessian = true;
+      req.acceleration = &a_;      // kq d(M(q) a)/dq
     } else if (!constant_mass_) {  // M(q) in the same pass as the forces
       req.matrix = true;
       req.scales = MatrixScales{1.0, 0.0, 0.0};
@@ -253,71 +337,119 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
                         newton_solver_.message()));
       factored_h_ = h;
       factored_at_ = trial_;
-      want_fresh = s_.newton == NewtonMode::kFull;
+      factored_a_ = a_;
+      want_fresh = s_.newton == NewtonMode::kFull || coasting;  // a hard step: full Newton
     }
-    // -[r / beta'; C], r = M a + C_q^T lambda - Q
+    // -[r / beta'; c], r = M a + C_q^T lambda - Q; c = C (index 3) or Cdot / gamma'
     rhs_.head(n_) = (eval_.Q - Ma_) / bp;
     if (m_ > 0) {
       rhs_.head(n_) -= eval_.CqT_lambda / bp;
-      rhs_.tail(m_) = -eval_.C;
+      if (index2)
+        rhs_.tail(m_) = -eval_.Cdot / gp;
+      else
+        rhs_.tail(m_) = -eval_.C;
     }
     instrumented::solve(newton_solver_, rhs_, sol_, stats_);
-    if (!sol_.allFinite()) {
+    if (index2) {
+      // the projection onto C = 0 along R = C_q(q_n)^T: C_q (dq + R deta) = -C with
+      // C_q dq = -Cdot / gamma', solved with C_q(q_n) C_q(q_n)^T for C_q R
+      eta_ = projection_solver_.solve(eval_.Cdot / gp - eval_.C);
+      dy_.noalias() = constraint_jacobian_.transpose() * eta_;
+    }
+    if (!sol_.allFinite() || (index2 && !dy_.allFinite())) {
       Index bad = 0;
       while (bad < n_ && std::isfinite(eval_.Q[bad])) ++bad;
       return fail(bad < n_ ? fmt::format("the force on {} is not finite (NaN/Inf): an element "
                                          "or load cannot be evaluated at this iterate; {}",
-                                         dae.coordinate_name(bad), cause)
+                                         dae.coordinate_name(bad), diverge_cause)
                            : std::string("the Newton update is not finite: a nearly singular "
                                          "Newton matrix (a mechanism or a body without "
                                          "supports)"));
     }
     a_ += bp * sol_.head(n_);
     trial_.lambda += bp * sol_.tail(m_);
-    const double norm = n_ > 0 ? sol_.head(n_).cwiseAbs().maxCoeff(&worst) : 0.0;
+    if (index2) corr_ += dy_;
+    // the update against the tolerances (see the file header): relative to the larger of
+    // the model's scale and the iterate itself (a model that starts without loads, moving,
+    // has no acceleration scale yet), and at least a few ulps of the quantity
+    constexpr double kUlps = 64.0 * kEps;
+    const double a_now = n_ > 0 ? a_.lpNorm<Eigen::Infinity>() : 0.0;
+    const double l_now = m_ > 0 ? trial_.lambda.lpNorm<Eigen::Infinity>() : 0.0;
+    a_tol = std::max(s_.tolerance * std::max(a_scale_, a_now), kUlps * a_now);
+    f_tol = m_ > 0 ? std::max(s_.tolerance * std::max(f_scale_, l_now), kUlps * l_now) : 1.0;
+    q_tol = std::max(s_.tolerance * q_scale_, kUlps * trial_.q.lpNorm<Eigen::Infinity>());
+    last_da = n_ > 0 ? bp * sol_.head(n_).cwiseAbs().maxCoeff(&worst) : 0.0;
+    last_dl = m_ > 0 ? bp * sol_.tail(m_).lpNorm<Eigen::Infinity>() : 0.0;
+    last_dy = index2 ? dy_.lpNorm<Eigen::Infinity>() : 0.0;
+    auto ratio = [](double d, double tol) { return tol > 0.0 ? d / tol : (d > 0.0 ? 1e300 : 0.0); };
+    const double norm =
+        std::max({ratio(last_da, a_tol), ratio(last_dl, f_tol), ratio(last_dy, q_tol)});
     // convergence (Hairer & Wanner, Solving ODEs II, sec. IV.8): the error left after an
-    // update dq is about theta/(1 - theta) |dq| with the contraction rate theta. A matrix
-    // from an earlier step contracts unevenly (the first update removes the predictor's
-    // error, later ones the matrix's), so then theta is the larger of the last two rates.
-    // An update at round-off level (1e3 eps of the step's first update, or 16 eps of q)
-    // also ends the iterations: nothing is left to gain.
+    // update is about theta/(1 - theta) times the update with the contraction rate theta. A
+    // matrix from an earlier step contracts unevenly (the first update removes the
+    // predictor's error, later ones the matrix's), so then theta is the larger of the last
+    // two rates. An update at round-off level (1e3 eps of the step's first update) also ends
+    // the iterations: nothing is left to gain.
     if (refresh) fresh_in_step = true;
     if (first_norm < 0.0) first_norm = norm;
-    const double floor =
-        std::max(1e3 * kEps * first_norm, 16.0 * kEps * trial_.q.lpNorm<Eigen::Infinity>());
-    bool converged = norm <= std::max(tol, floor);
+    bool converged = norm <= std::max(1.0, 1e3 * kEps * first_norm);
     if (previous > 0.0) {
       const double theta = norm / previous;
       const double rate =
           fresh_in_step ? theta : (last_theta > 0.0 ? std::max(theta, last_theta) : 1.0);
-      if (rate < 1.0 && rate / (1.0 - rate) * norm <= tol) converged = true;
+      if (rate < 1.0 && rate / (1.0 - rate) * norm <= 1.0) converged = true;
       last_theta = theta;
-      // modified Newton: a Jacobian at this iterate when the contraction is slow, or too
-      // slow to reach the tolerance within the remaining iterations
+      // modified Newton: a Jacobian at this iterate when the contraction is slower than
+      // refresh_rate, or too slow to reach the tolerance within the remaining iterations
       const bool too_slow =
-          theta >= 1.0 || std::pow(theta, s_.max_iterations - it) / (1.0 - theta) * norm > tol;
-      if (!converged && (theta > 0.5 || too_slow) && !refresh) {
+          theta >= 1.0 ||
+          std::pow(theta, s_.max_iterations - (it - restart_at)) / (1.0 - theta) * norm > 1.0;
+      if (!converged && (theta > s_.refresh_rate || too_slow) && !refresh) {
         want_fresh = true;   // a Jacobian at this iterate, or, when the stale matrix has
         if (theta >= 1.0) {  // driven the iterate away, at the predictor again
-          predict();
+          if (!coasting) restart_at = it;  // one fresh budget of iterations, once
+          coasting = true;
+          predict_coasting();
+          corr_.setZero();
           trial_.lambda = state.lambda;
           previous = last_theta = 0.0;
           continue;
         }
       }
       diverging = !converged && refresh && theta >= 1.0 ? diverging + 1 : 0;
+      if (diverging >= 1 && !coasting) {
+        // a fresh Jacobian diverges from the last step's acceleration (a sudden load
+        // makes it a poor guess): once more from the coasting position
+        coasting = true;
+        restart_at = it;
+        predict_coasting();
+        corr_.setZero();
+        trial_.lambda = state.lambda;
+        previous = last_theta = 0.0;
+        diverging = 0;
+        want_fresh = true;
+        continue;
+      }
       if (diverging >= 2)
         return fail(
             fmt::format("Newton diverges (updates grow by {:.3g} with a fresh "
                         "Jacobian; step {:g} s; largest update at {}): {}",
-                        theta, h, dae.coordinate_name(worst), cause));
+                        theta, h, dae.coordinate_name(worst), diverge_cause));
     }
     if (converged) break;
     previous = norm;
   }
   update_iterate(state, h);
-  // the constraints at the accepted positions (cheap: no forces, no matrix)
-  if (m_ > 0) {
+  // the constraints at the accepted positions (cheap: no forces, no matrix); with index 2
+  // also their Jacobian, the next step's projection R = C_q(q_{n+1})^T
+  if (index2) {
+    try {
+      prepare_projection(dae, trial_);
+    } catch (const SolverError& e) {
+      return fail(e.what());
+    }
+    report.residual = projection_eval_.C.lpNorm<Eigen::Infinity>();
+  } else if (m_ > 0) {
     DaeRequest req;
     req.forces = false;
     instrumented::evaluate(dae, trial_, req, eval_, stats_);
@@ -329,6 +461,12 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   state.lambda = trial_.lambda;
   a_n_ = a_;
   abar_n_ = abar_;
+  // a matrix that has aged so that the step needed more than refresh_iterations
+  // iterations is rebuilt at the start of the next step (the contraction slows as the
+  // motion carries the iterate away from where the matrix was factored)
+  if (!fresh_in_step && report.iterations > kRefreshIterations) refresh_next_ = true;
+  a_scale_ = std::max(a_scale_, a_n_.size() > 0 ? a_n_.lpNorm<Eigen::Infinity>() : 0.0);
+  if (m_ > 0) f_scale_ = std::max(f_scale_, state.lambda.lpNorm<Eigen::Infinity>());
   return report;
 }
 

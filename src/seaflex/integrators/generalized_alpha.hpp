@@ -15,18 +15,49 @@
 // parameters (alpha_m = 0, alpha_f = (1 - rho)/(1 + rho), rho in [1/2, 1]) are a special
 // case with HHT-alpha's spectral properties (Hilber, Hughes & Taylor 1977).
 //
+// Constraints (settings.constraints):
+//   kStabilizedIndex2 (default): the stabilized index-2 form of Gear, Gupta & Leimkuhler
+//     (1985), "Automatic integration of Euler-Lagrange equations with constraints", J.
+//     Comput. Appl. Math. 12-13:77-90, as Arnold, Bruls & Cardona apply it to
+//     generalized-alpha (Arnold, Cardona & Bruls 2016, "A Lie algebra approach to Lie group
+//     time integration of constrained systems", CISM course 565; error analysis in Arnold,
+//     Bruls & Cardona 2015, Numer. Math. 129:149-179): the velocity constraint C_q v + C_t = 0
+//     determines lambda, and the position constraint C = 0 is held by a projection term
+//     R eta added to q_{n+1}, with R = C_q(q_n)^T (GGL holds for any R with C_q R
+//     invertible; R fixed over the step makes q_{n+1} independent of the Newton path, so
+//     modified and full Newton give the same step). R eta is O(h^3) per step. Unlike the
+//     index-3 form, the multipliers carry no 1/h^2 amplification of errors, so rho_inf = 1
+//     (no numerical damping) stays stable on constrained systems (Arnold & Bruls 2007
+//     show the index-3 form's multiplier errors are not damped there).
+//   kIndex3: C(q_{n+1}) = 0 enforced directly (Arnold & Bruls 2007 eq. (10)).
+//
 // Newton iterations on the unknown a_{n+1}: with beta' = (1 - alpha_m)/(beta h^2 (1 -
 // alpha_f)) and gamma' = gamma/(beta h), dq'' = beta' dq and dq' = gamma' dq, and the
 // iteration matrix, scaled by 1/beta' (Bottasso, Dopico & Trainelli 2008) so that its
 // condition does not grow as 1/h^2, is the System's Newton matrix with
 //   km = 1, kq = 1/beta', kv = gamma'/beta'
-// (plus kq d(C_q^T lambda)/dq):
-//   [M + kv Ct + kq Kt,  C_q^T;  C_q, 0] [dq; dmu] = -[r / beta'; C],  dlambda = beta' dmu,
-// r = M a + C_q^T lambda - Q. The dependence of M on q in M a is left out of the matrix
-// (it only slows convergence). Full Newton refactors every iteration; modified Newton keeps
-// a factorization across iterations and steps while the contraction rate of the updates
-// stays below 1/2, and refactors with a fresh Jacobian otherwise.
+// (plus kq d(C_q^T lambda)/dq and kq d(M(q) a)/dq for bodies whose mass depends on q):
+//   S = M + kv Ct + kq Kt,  [S, C_q^T; C_q, 0] [dq; dmu] = -[r / beta'; c],
+//   dlambda = beta' dmu,  r = M a + C_q^T lambda - Q,
+// with c = C (index 3) or c = (C_q v + C_t) / gamma' (index 2; then the projection update
+// deta solves C_q(q_n) C_q(q_n)^T deta = -C + Cdot / gamma', a sparse LDL^T of m x m
+// factored once per step, and q_{n+1} gains R deta).
+//
+// Convergence (what the step solves for, not only positions): the Newton updates of the
+// accelerations, of the multipliers and of the projection are measured against
+//   tolerance x (the largest |q''| of the run, at least the initial max_i |Q_i|/M_ii),
+//   tolerance x (the largest |lambda| of the run, at least the initial largest force),
+//   tolerance x (the model's size, its largest initial coordinate, at least 1 m),
+// and the error left after an update is estimated as theta/(1 - theta) times the update
+// with the observed contraction rate theta (Hairer & Wanner, Solving ODEs II, sec. IV.8).
+// Measuring accelerations keeps the velocity error per step below h tolerance x q''
+// whatever h is: a position criterion lets the velocity error grow as 1/h.
+// Modified Newton keeps a factorization across iterations and steps while the observed
+// contraction rate stays below settings.refresh_rate, and refactors at the current
+// iterate otherwise (the rate policy of Hairer & Wanner sec. IV.8 for simplified Newton).
 #pragma once
+
+#include <Eigen/SparseCholesky>
 
 #include "seaflex/integrators/integrator.hpp"
 #include "seaflex/solvers/kkt_solver.hpp"
@@ -34,6 +65,7 @@
 namespace seaflex {
 
 enum class NewtonMode { kFull, kModified };
+enum class ConstraintLevel { kStabilizedIndex2, kIndex3 };
 
 struct GeneralizedAlphaSettings {
   double alpha_m = 0.0;
@@ -41,8 +73,13 @@ struct GeneralizedAlphaSettings {
   double gamma = 0.5;
   double beta = 0.25;
   NewtonMode newton = NewtonMode::kModified;
+  ConstraintLevel constraints = ConstraintLevel::kStabilizedIndex2;
   int max_iterations = 12;  ///< Newton iterations per step before the step fails
-  double tolerance = 1e-9;  ///< on the estimated error of q, relative to the model's size
+  /// on the estimated error of the accelerations, multipliers and positions, relative to
+  /// the model's acceleration, force and size scales (see the file header)
+  double tolerance = 1e-10;
+  /// modified Newton refactors when the updates contract more slowly than this
+  double refresh_rate = 0.25;
   LinearSolverKind linear_solver = kDefaultLinearSolver;  ///< backend of the Newton solves
   /// Chung & Hulbert's parameters for a spectral radius rho_inf in [0, 1].
   static GeneralizedAlphaSettings from_rho_inf(double rho_inf);
@@ -70,28 +107,42 @@ class GeneralizedAlpha : public Integrator {
 
  private:
   void prepare(const Dae& dae);
-  // the first iterate of a step (a_)
-  void predict();
+  // the iterate a_ for which q_{n+1} = q_n + h v_n (abar_{n+1} = -(1/2 - beta)/beta abar_n)
+  void predict_coasting();
   // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n
   void update_iterate(const State& state_n, double h);
   // M a: from the stored constant mass matrix, from eval_ (in_eval: assembled with km = 1
   // alone in the same pass as the forces), or from a mass-only evaluation
   void mass_times(const Dae& dae, const State& state, const VecX& a, bool in_eval, VecX& out);
   bool refactor(const Dae& dae, const State& trial, double h);
+  // C_q at the step's start and the factorization of C_q C_q^T (index 2)
+  void prepare_projection(const Dae& dae, const State& state);
 
   GeneralizedAlphaSettings s_;
   bool prepared_ = false;
   bool started_ = false;
   bool constant_mass_ = false;
   Index n_ = 0, m_ = 0;
-  double q_scale_ = 1.0;
+  double q_scale_ = 1.0;  // the model's size (m)
+  double a_scale_ = 0.0;  // the largest acceleration seen (m/s^2)
+  double f_scale_ = 0.0;  // the largest multiplier or force seen (N)
   DaeEval eval_, mass_eval_;
-  SpMat mass_;                // M, when constant
-  KktSolver newton_solver_;   // the iteration matrix
-  KktSolver initial_solver_;  // [M C_q^T; C_q 0] for the initial accelerations
-  double factored_h_ = 0.0;   // the step the Newton matrix was factored for (0: none)
-  State factored_at_;         // the iterate it was factored at (restart: factored again)
+  SpMat mass_;                 // M, when constant
+  KktSolver newton_solver_;    // the iteration matrix
+  KktSolver initial_solver_;   // [M C_q^T; C_q 0] for the initial accelerations
+  double factored_h_ = 0.0;    // the step the Newton matrix was factored for (0: none)
+  bool refresh_next_ = false;  // the next step starts with a fresh matrix
+  State factored_at_;          // the iterate it was factored at (restart: factored again)
+  VecX factored_a_;            // and its accelerations (the d(M a)/dq term)
   VecX a_n_, abar_n_, a_, abar_, Ma_, rhs_, sol_;
+  // index 2: the projection term R eta of q_{n+1}, R = C_q(q_n)^T, its update, and
+  // C_q(q_n) C_q(q_n)^T factored once per step
+  VecX corr_, dy_, eta_;
+  DaeEval projection_eval_;
+  SpMat constraint_jacobian_;
+  Eigen::SimplicialLDLT<SpMat> projection_solver_;
+  bool projection_analyzed_ = false;
+  bool projection_ready_ = false;  // factored for the current state
   State trial_;
   std::string failure_;
 };

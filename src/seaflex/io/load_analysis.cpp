@@ -36,12 +36,16 @@ IntegratorFactory build_alpha(MapReader& r, bool hht) {
   const auto iterations = r.integer("max_iterations", Need::kOptional, 1, 1000);
   const auto tol = r.number("tolerance", Need::kOptional, NumberRule::range(1e-15, 1e-2, ""));
   const auto solver = r.choice("linear_solver", Need::kOptional, {"klu", "sparselu", "umfpack"});
+  const auto form = r.choice("constraint_form", Need::kOptional, {"index2", "index3"});
+  const auto refresh = r.number("refresh_rate", Need::kOptional, NumberRule::range(0.01, 0.99, ""));
   const double rho_inf = rho.value_or(hht ? 0.9 : 0.8);
   GeneralizedAlphaSettings s = hht ? GeneralizedAlphaSettings::hht(rho_inf)
                                    : GeneralizedAlphaSettings::from_rho_inf(rho_inf);
   s.newton = newton == "full" ? NewtonMode::kFull : NewtonMode::kModified;
   if (iterations) s.max_iterations = *iterations;
   if (tol) s.tolerance = *tol;
+  if (form == "index3") s.constraints = ConstraintLevel::kIndex3;
+  if (refresh) s.refresh_rate = *refresh;
   if (solver) s.linear_solver = *KktSolver::parse(*solver);
   return [s]() { return std::make_unique<GeneralizedAlpha>(s); };
 }

@@ -21,6 +21,9 @@ struct AssemblyTarget {
   VecX* forces = nullptr;                        ///< Q += ... when not null
   math::SparseBlockAssembler* matrix = nullptr;  ///< matrix += ... when not null
   MatrixScales scales;
+  /// When not null (and kq != 0), bodies and loads whose mass matrix depends on q add
+  /// kq * d(M(q) a)/dq for these accelerations a to the matrix (implicit integrators).
+  const VecX* acceleration = nullptr;
 };
 
 }  // namespace seaflex

@@ -25,6 +25,9 @@ struct DaeRequest {
   bool multiplier_hessian = false;
   /// C_q^T lambda (state.lambda) into DaeEval::CqT_lambda (residuals of implicit methods)
   bool reaction_forces = false;
+  /// when not null, adds kq * d(M(q) a)/dq for this a to the top-left block (bodies and
+  /// loads whose mass matrix depends on q: rigid bodies, turning added mass)
+  const VecX* acceleration = nullptr;
 };
 
 /// Results and workspace of evaluations; allocated once by Dae::make_eval().

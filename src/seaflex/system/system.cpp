@@ -93,6 +93,7 @@ DaeEval System::make_eval() const {
 void System::evaluate(const State& state, const DaeRequest& request, DaeEval& out) const {
   AssemblyTarget target;
   target.scales = request.scales;
+  target.acceleration = request.acceleration;
   if (request.forces) {
     out.Q.setZero();
     target.forces = &out.Q;
