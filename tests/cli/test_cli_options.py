@@ -25,14 +25,15 @@ supports:
   - {body: beam, node: start, type: clamped}
 """
 
-# a 1 kg body on a 100 N/m spring along x: omega = 10 rad/s, released 0.1 m from rest
+# a 1 kg body on a 100 N/m spring along x: omega = 10 rad/s, released 1 micrometre from rest;
+# the spring is 100 m long, so that it stays linear even when the motion grows to metres
 SPRING = """
 environment: {gravity: 0}
 bodies:
-  box: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [1.1, 0, 0]}
+  box: {type: rigid_body, mass: 1, inertia: [1, 1, 1], position: [100.000001, 0, 0]}
 connections:
   - {name: spring, type: spring, from: {body: ground, position: [0, 0, 0]},
-     to: {body: box, position: [0, 0, 0]}, free_length: 1, stiffness: 100}
+     to: {body: box, position: [0, 0, 0]}, free_length: 100, stiffness: 100}
 """
 
 
@@ -97,7 +98,7 @@ class Options(TempDirCase):
                                 "--count: must be a whole number from 1 to 1000000, got '%s'" % bad)
 
     def test_quiet_prints_only_errors(self):
-        model = self.model(CANTILEVER + "dynamics: {time_step: 1e-4, duration: 0.01, output_interval: 1e-3, "
+        model = self.model(CANTILEVER + "dynamics: {time_step: 4e-5, duration: 0.01, output_interval: 1e-3, "
                                         "initial_state: statics}\nstatics: {load_steps: 2}\n")
         out = os.path.join(self.dir, "out")
         for args in (["statics", model], ["run", model], ["modes", model, "-n", "2"],
@@ -241,9 +242,9 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
 
     def test_rk4_growing_without_bound_is_stopped(self):
         # omega h = 10 x 0.3 = 3 > 2.83: RK4 multiplies the amplitude by |R(3i)| = 1.505
-        # per step (energy x 2.26). In 35 steps that takes the amplitude from 0.1 m to 1.6e5 m
-        # and the energy 3e12-fold, below the divergence test on q (1e6 x the initial size
-        # 1.1 m), so the run used to end normally (exit 0). The growth test fires after its
+        # per step (energy x 2.26). In 35 steps that takes the amplitude from 1e-6 m to 1.6 m
+        # and the energy 3e12-fold, far below the divergence test on q (1e6 x the initial
+        # size 100 m), so the run used to end normally (exit 0). The growth test fires after its
         # 5 windows of 6 steps, at t = 30 x 0.3 = 9 s, and names omega from the growth per
         # step (omega h from |R(i omega h)|)
         path = self.model(SPRING + "dynamics: {time_step: 0.3, duration: 10.5}\n")

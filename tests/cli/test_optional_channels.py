@@ -82,6 +82,52 @@ output: {support_reactions: true, node_slopes: true, energies: true}
         self.assertAlmostEqual(row["chain.energy.strain"] / (w * w * 50 ** 3 / (6 * EA)), 1.0,
                                delta=1e-3)
 
+    def test_catenary_fairlead_tension(self):
+        # a 100 m steel line pinned at both ends, 80 m apart at the same height: the elastic
+        # catenary (Irvine, Cable Structures, 1981, eq. 2.21 with the ends level) gives the
+        # horizontal tension H from  S = H L / EA + (2 H / w) asinh(w L / (2 H)),  solved here
+        # by bisection, and each end carries half the weight, V = w L / 2 (symmetry). The
+        # pinned end's reaction is the line's tension at the fairlead, sqrt(H^2 + V^2).
+        # The line starts on a 16-segment polyline near a catenary (L = its length, 99.94 m;
+        # from a straight or V shape statics would start at a buckling problem).
+        # H = 26078 N, V = 38482 N. Tolerances: V to 1e-6 (equilibrium, as for the hanging
+        # chain); H to 2e-4, three times the share of the bending stiffness that the
+        # catenary leaves out, EI / (H a^2) = 2e3 / (26078 x 33.8^2) = 6.7e-5 with the
+        # catenary parameter a = H / w = 33.8 m
+        E, A, rho, S = 2.0e11, 0.01, 7850.0, 80.0
+        w, EA = rho * A * G, E * A
+        a = 33.8
+        raw = [a * math.asinh((-50 + 100 * k / 16) / a) for k in range(17)]
+        pts = [[round(80 * (x - raw[0]) / (raw[-1] - raw[0]), 6), 0,
+                round(a * math.cosh(x / a) - a * math.cosh(raw[0] / a), 6)] for x in raw]
+        pts[0], pts[-1] = [0, 0, 0], [80, 0, 0]
+        L = sum(math.dist(pts[i], pts[i + 1]) for i in range(16))
+
+        def span(H):
+            return H * L / EA + 2 * H / w * math.asinh(w * L / (2 * H))
+        lo, hi = 1.0, 1e7
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if span(mid) < S else (lo, mid)
+        H, V = 0.5 * (lo + hi), w * L / 2
+        row = self.statics_row("""
+environment: {gravity: 9.81}
+bodies:
+  line: {type: ancf_beam, polyline: %s, elements: 5,
+         area: 0.01, second_moment: 1.0e-8, youngs_modulus: 2.0e11, density: 7850}
+supports:
+  - {body: line, node: start, type: pinned}
+  - {body: line, node: end, type: pinned}
+statics: {tolerance: 1.0e-10}
+output: {support_reactions: true}
+""" % pts)
+        self.assertAlmostEqual(row["line.n0.reaction.fz"] / V, 1.0, delta=1e-6)
+        self.assertAlmostEqual(row["line.n80.reaction.fz"] / V, 1.0, delta=1e-6)
+        self.assertAlmostEqual(-row["line.n0.reaction.fx"] / H, 1.0, delta=2e-4)
+        self.assertAlmostEqual(row["line.n80.reaction.fx"] / H, 1.0, delta=2e-4)
+        T = math.hypot(row["line.n0.reaction.fx"], row["line.n0.reaction.fz"])
+        self.assertAlmostEqual(T / math.hypot(H, V), 1.0, delta=2e-4)
+
     def test_clamped_root_force_and_moment(self):
         # a very stiff 10 m cantilever along x under its own weight (tip deflection 1e-6 m):
         # the clamp carries the weight W = rho A L g and the root moment W L / 2 about -y
@@ -173,7 +219,8 @@ supports:
         self.assertIn("output channels: 24\n", r.stdout)  # 9 + 9 slopes + 3 reactions + 3 energies
         r = run("check", self.model(text + "output: {energies: yes}\n"))
         self.assertEqual(r.returncode, 2)
-        self.assertIn("model.yaml:8:19: output.energies: unknown value 'yes'", r.stderr)
+        self.assertIn("model.yaml:7:20: output.energies: unknown value 'yes'; expected one of: "
+                      "true, false", r.stderr)
 
 
 if __name__ == "__main__":
