@@ -13,7 +13,7 @@ import os
 import sys
 import unittest
 
-from cli_support import TempDirCase, run
+from cli_support import SRC, TempDirCase, run
 
 G = 9.81
 
@@ -127,6 +127,20 @@ output: {support_reactions: true}
         self.assertAlmostEqual(row["line.n80.reaction.fx"] / H, 1.0, delta=2e-4)
         T = math.hypot(row["line.n0.reaction.fx"], row["line.n0.reaction.fz"])
         self.assertAlmostEqual(T / math.hypot(H, V), 1.0, delta=2e-4)
+
+    def test_plate_support_reactions_carry_its_weight(self):
+        # the simply supported plate example (10 m x 10 m x 0.1 m steel, 8 x 8 elements): the
+        # vertical reactions of the edge nodes add up to the weight rho t a b g = 779895 N;
+        # tolerance 1e-6 as for the chain (statics balances forces to its tolerance)
+        with open(os.path.join(SRC, "examples", "plate_simply_supported.yaml")) as f:
+            text = f.read()
+        self.assertNotIn("\noutput:", text)
+        row = self.statics_row(text + "\noutput: {support_reactions: true}\n")
+        fz = [v for name, v in row.items() if name.endswith(".reaction.fz")]
+        self.assertEqual(len(fz), 32)  # the 32 edge nodes of an 8 x 8 mesh
+        self.assertAlmostEqual(sum(fz) / (7950 * 0.1 * 100 * G), 1.0, delta=1e-6)
+        # held slopes along the edges are generalized forces, named by the slope held
+        self.assertIn("plate.n0_1.reaction.r_p2.z", row)
 
     def test_clamped_root_force_and_moment(self):
         # a very stiff 10 m cantilever along x under its own weight (tip deflection 1e-6 m):
