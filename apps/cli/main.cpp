@@ -634,6 +634,12 @@ int main(int argc, char** argv) {
   }
   try {
     if (threads > 0) set_threads(threads);
+    if (threads == 0 && seaflex::threads() > cli::hardware_threads())  // from OMP_NUM_THREADS
+      throw InputError({Diagnostic{
+          "OMP_NUM_THREADS", 0, 0, "",
+          fmt::format("{} threads are more than the {} hardware threads of this machine; set at "
+                      "most {} (or use --threads)",
+                      seaflex::threads(), cli::hardware_threads(), cli::hardware_threads())}});
     install_interrupt_handlers();  // SIGINT/SIGTERM end a run after its current step
     if (*check) return cmd_check(file);
     if (*statics) return cmd_statics(file, dir, quiet, output_options);

@@ -9,10 +9,11 @@ usage: test_cli_options.py SEAFLEX_EXECUTABLE SOURCE_DIR
 """
 import os
 import re
+import subprocess
 import sys
 import unittest
 
-from cli_support import SRC, TempDirCase, run
+from cli_support import SEAFLEX, SRC, TempDirCase, run
 
 EXAMPLES = os.path.join(SRC, "examples")
 
@@ -69,6 +70,17 @@ class Options(TempDirCase):
                                 "--threads: must be a whole number from 1 to %d (the hardware "
                                 "threads of this machine), got '%s'" % (hw, bad))
         r = run("statics", model, "-o", out, "-q", "--threads", str(hw))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        # the same limit on OMP_NUM_THREADS, the default of --threads
+        env = dict(os.environ, OMP_NUM_THREADS=str(hw + 1))
+        r = subprocess.run([SEAFLEX, "statics", model, "-o", out, "-q"], capture_output=True,
+                           text=True, env=env, timeout=300)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("OMP_NUM_THREADS: %d threads are more than the %d hardware threads of this "
+                      "machine; set at most %d (or use --threads)" % (hw + 1, hw, hw), r.stderr)
+        env["OMP_NUM_THREADS"] = str(hw)
+        r = subprocess.run([SEAFLEX, "statics", model, "-o", out, "-q"], capture_output=True,
+                           text=True, env=env, timeout=300)
         self.assertEqual(r.returncode, 0, r.stderr)
 
     def test_numeric_options_are_checked(self):
