@@ -170,6 +170,30 @@ class Options(TempDirCase):
                                    r"reduced the residual \S+-fold\) when it reached "
                                    r"statics.max_iterations \(1\): raise max_iterations")
         self.assertNotIn("load too large", r.stderr)
+        # a line 100 m long pinned at both ends 80 m apart, starting as a V with a kink: at
+        # a small load its nearly stress-free shape has no stiffness against buckling, and
+        # Newton fails at every increment down to min_increment; the advice names the model,
+        # not the increment or the iterations
+        path = self.model("""
+environment: {gravity: 9.81}
+bodies:
+  line: {type: ancf_beam, polyline: [[0, 0, 0], [40, 0, -30], [80, 0, 0]], elements: [20, 20],
+         area: 0.01, second_moment: 1.0e-8, youngs_modulus: 2.0e11, density: 7850}
+supports:
+  - {body: line, node: start, type: pinned}
+  - {body: line, node: end, type: pinned}
+statics: {load_steps: 4}
+""")
+        r = run("statics", path, "-o", os.path.join(self.dir, "out2"))
+        self.assertEqual(r.returncode, 3, r.stdout + r.stderr)
+        self.assertRegex(r.stderr, r"statics did not converge at load factor \S+ \(last converged "
+                                   r"0\): relative residual \S+ after \d+ iterations, largest at "
+                                   r"line.\S+; no convergence even with the load increment halved "
+                                   r"to \S+ \(statics.min_increment 0.0001\): the model may have no "
+                                   r"equilibrium near this load \(a mechanism: check the supports "
+                                   r"and joints; a buckling or snap-through load; a load larger "
+                                   r"than the structure can carry\)")
+        self.assertNotIn("raise max_iterations", r.stderr)
 
     def test_check_counts_the_selected_channels(self):
         r = run("check", self.model(CANTILEVER + "output: {channels: ['beam.n10.*', 'beam.n0.x']}\n"))
