@@ -12,7 +12,9 @@
 #include <iterator>
 #include <numbers>
 
+#include "option_checks.hpp"
 #include "plot_command.hpp"
+#include "progress_line.hpp"
 #include "seaflex/core/checkpoint.hpp"
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/interrupt.hpp"
@@ -34,38 +36,6 @@ namespace {
 
 constexpr int kExitInput = 2;
 constexpr int kExitSolver = 3;
-
-// a progress line on stderr, shown only when a run lasts more than two seconds
-class ProgressLine {
- public:
-  explicit ProgressLine(bool quiet) : quiet_(quiet), start_(Clock::now()), last_(start_) {}
-  ~ProgressLine() { done(); }
-  void update(double t, double duration) {
-    if (quiet_) return;
-    const auto now = Clock::now();
-    const double elapsed = seconds(now - start_);
-    if (elapsed < 2.0 || seconds(now - last_) < 0.5) return;
-    last_ = now;
-    const double frac = duration > 0 ? t / duration : 1.0;
-    const double eta = frac > 0 ? elapsed * (1.0 - frac) / frac : 0.0;
-    std::fprintf(stderr,
-                 "\r[seaflex] t = %.4g / %.4g s  %3.0f%%  elapsed %.1f s  remaining %.1f s  ", t,
-                 duration, 100.0 * frac, elapsed, eta);
-    shown_ = true;
-  }
-  void done() {
-    if (shown_) std::fputc('\n', stderr);
-    shown_ = false;
-  }
-  double elapsed() const { return seconds(Clock::now() - start_); }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  static double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-  bool quiet_;
-  Clock::time_point start_, last_;
-  bool shown_ = false;
-};
 
 void make_output_dir(const fs::path& dir) {
   std::error_code ec;
@@ -232,8 +202,12 @@ void print_summary(const io::Model& model) {
   for (const auto& f : sys.forces()) fmt::print("  {}\n", f->name());
   fmt::print("gravity: ({:g}, {:g}, {:g}) m/s^2\n", model.gravity.x(), model.gravity.y(),
              model.gravity.z());
-  fmt::print("coordinates: {}, constraint rows: {}, output channels: {}\n", sys.num_coordinates(),
-             sys.num_constraints(), io::model_channels(model).size());
+  // the channels written: those the output section selects
+  const std::size_t written = io::output_channels(model).size(),
+                    all = io::model_channels(model).size();
+  fmt::print("coordinates: {}, constraint rows: {}, output channels: {}{}\n", sys.num_coordinates(),
+             sys.num_constraints(), written,
+             written < all ? fmt::format(" (of {}, as the output section selects)", all) : "");
   fmt::print(
       "statics: {} load step(s), tolerance {:g}, max {} iterations per step, loads at t = {:g} s\n",
       model.statics.load_steps, model.statics.tolerance, model.statics.max_iterations,
@@ -260,17 +234,16 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   State state = model.system->initial_state();
   try {
     const StaticsReport rep = solve_statics(
-        *model.system, state, model.statics, [&](double factor, int iterations, double residual) {
+        *model.system, state, model.statics,
+        [&](double factor, int iterations, const StaticsReport& so_far) {
           if (!quiet && model.statics.load_steps > 1)
-            std::fprintf(
-                stderr,
-                "[seaflex] statics: load factor %.4g converged in %d iterations, residual %.2e\n",
-                factor, iterations, residual);
+            fmt::print(stderr,
+                       "[seaflex] statics: load factor {:.4g} converged in {} iterations: {}\n",
+                       factor, iterations, describe_convergence(so_far));
         });
-    fmt::print(
-        "statics converged: {} load increment(s), {} Newton iterations, relative residual {:.2e}, "
-        "constraint violation {:.2e}\n",
-        rep.increments, rep.iterations, rep.residual, rep.constraint_violation);
+    if (!quiet)
+      fmt::print("statics converged: {} load increment(s), {} Newton iterations; {}\n",
+                 rep.increments, rep.iterations, describe_convergence(rep));
   } catch (const SolverError&) {
     Outputs partial(model, dir, "statics_partial", false);
     partial.write_row(io::output_channels(model), state);
@@ -296,7 +269,7 @@ int cmd_statics(const std::string& file, const fs::path& dir, bool quiet,
   make_output_dir(dir);
   clear_results(model, dir);
   run_statics(model, dir, quiet);
-  fmt::print("wrote {}\n", Outputs::describe(model, dir, "statics"));
+  if (!quiet) fmt::print("wrote {}\n", Outputs::describe(model, dir, "statics"));
   return 0;
 }
 
@@ -339,39 +312,47 @@ void check_checkpointable(const io::Model& model, const std::string& file) {
 
 // Checkpoints every `rows` output rows into DIR/checkpoint.txt.
 void enable_checkpoints(Simulation& sim, const std::string& file, const fs::path& dir, long rows,
-                        Integrator& integrator, Outputs& outputs) {
+                        Integrator& integrator, Outputs& outputs,
+                        const cli::ProgressLine& progress) {
   const std::string model_path = fs::absolute(file).string();
   const std::string hash = fnv1a(file_text(file));
-  sim.set_checkpoint(rows,
-                     [=, &integrator, &outputs](const State& state, const SimulationPosition& pos) {
-                       CheckpointWriter w;
-                       w.put("format", std::string("seaflex-checkpoint-1"));
-                       w.put("model", to_hex(model_path));
-                       w.put("model_hash", hash);
-                       w.put("checkpoint_rows", rows);
-                       pos.save(w);
-                       w.put("state.t", state.t);
-                       w.put("state.q", state.q);
-                       w.put("state.v", state.v);
-                       w.put("state.lambda", state.lambda);
-                       w.put("state.z", state.z);
-                       if (!integrator.save(w) || !outputs.save(w))
-                         throw std::runtime_error("this run cannot be checkpointed");
-                       w.write((dir / "checkpoint.txt").string());
-                     });
+  sim.set_checkpoint(rows, [=, &integrator, &outputs, &progress](const State& state,
+                                                                 const SimulationPosition& pos) {
+    CheckpointWriter w;
+    w.put("format", std::string("seaflex-checkpoint-1"));
+    w.put("model", to_hex(model_path));
+    w.put("model_hash", hash);
+    w.put("checkpoint_rows", rows);
+    w.put("wall_s", progress.elapsed());  // the whole run's, so far
+    pos.save(w);
+    w.put("state.t", state.t);
+    w.put("state.q", state.q);
+    w.put("state.v", state.v);
+    w.put("state.lambda", state.lambda);
+    w.put("state.z", state.z);
+    if (!integrator.save(w) || !outputs.save(w))
+      throw std::runtime_error("this run cannot be checkpointed");
+    w.write((dir / "checkpoint.txt").string());
+  });
 }
 
 // Runs the simulation (fresh, or from a checkpoint) and prints its summary.
 int simulate(Simulation& sim, State& state, const io::Model& model, const fs::path& dir,
-             Outputs& outputs, bool quiet, const SimulationPosition* resume_at) {
+             Outputs& outputs, bool quiet, const SimulationPosition* resume_at,
+             cli::ProgressLine& progress) {
   const auto& d = *model.dynamics;
-  ProgressLine progress(quiet);
   sim.set_progress([&](double t, double T) { progress.update(t, T); });
   try {
+    const double resume_at_t = state.t;
     const SimulationReport rep = resume_at ? sim.resume(state, *resume_at) : sim.run(state);
     progress.done();
+    if (quiet) return 0;  // -q: errors only
+    // a resumed run counts from its start: steps, rows and wall time of the whole run
     const std::string thread_note =
-        fmt::format("{} thread{}", threads(), threads() == 1 ? "" : "s");
+        fmt::format("{} thread{}", threads(), threads() == 1 ? "" : "s") +
+        (resume_at ? fmt::format("; resumed at t = {:g} s, {:.2f} s of it since", resume_at_t,
+                                 progress.this_process())
+                   : "");
     if (rep.rejected_steps > 0 || rep.min_step < d.time_step)
       fmt::print(
           "dynamics: {} steps ({} rejected and retried, smallest {:g} s) to t = {:g} s in "
@@ -409,6 +390,11 @@ long checkpoint_rows(const io::DynamicsSettings& d, double seconds, const std::s
         {Diagnostic{file, 0, 0, "--checkpoint-every",
                     fmt::format("must be a whole number of output intervals ({:g} s), got {:g} s",
                                 interval, seconds)}});
+  if (seconds > d.duration)
+    throw InputError(
+        {Diagnostic{file, 0, 0, "--checkpoint-every",
+                    fmt::format("must not exceed the run's duration ({:g} s), got {:g} s",
+                                d.duration, seconds)}});
   return std::lround(rows);
 }
 
@@ -430,8 +416,9 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
   Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
   Outputs outputs(model, dir, "timeseries", true);
   outputs.attach(sim);
-  if (rows > 0) enable_checkpoints(sim, file, dir, rows, *integrator, outputs);
-  return simulate(sim, state, model, dir, outputs, quiet, nullptr);
+  cli::ProgressLine progress(quiet);
+  if (rows > 0) enable_checkpoints(sim, file, dir, rows, *integrator, outputs, progress);
+  return simulate(sim, state, model, dir, outputs, quiet, nullptr, progress);
 }
 
 // Continues the run whose last checkpoint is DIR/checkpoint.txt: the joined files are
@@ -468,9 +455,13 @@ int cmd_resume(const fs::path& dir, bool quiet) {
     throw InputError({Diagnostic{path, 0, 0, "state", "the checkpoint is for another model"}});
   integrator->restore(*model.system, in);
   const SimulationPosition pos = SimulationPosition::load(in);
-  enable_checkpoints(sim, file, dir, in.integer("checkpoint_rows"), *integrator, outputs);
+  // the progress line and the summary count the whole run: the wall time before the
+  // checkpoint, and the fraction of the run done then
+  cli::ProgressLine progress(quiet, in.has("wall_s") ? in.number("wall_s") : 0.0,
+                             (state.t - pos.t0) / d.duration);
+  enable_checkpoints(sim, file, dir, in.integer("checkpoint_rows"), *integrator, outputs, progress);
   if (!quiet) fmt::print("resuming {} at t = {:g} s\n", file, state.t);
-  return simulate(sim, state, model, dir, outputs, quiet, &pos);
+  return simulate(sim, state, model, dir, outputs, quiet, &pos, progress);
 }
 
 int cmd_modes(const std::string& file, const fs::path& dir, int count, bool about_initial,
@@ -484,15 +475,15 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
   std::FILE* out = std::fopen((dir / "modes.csv").c_str(), "w");
   if (!out) throw InputError({Diagnostic{(dir / "modes.csv").string(), 0, 0, "", "cannot write"}});
   std::fprintf(out, "mode,frequency_hz,period_s,omega_rad_s\n");
-  fmt::print("{:>5} {:>14} {:>14}\n", "mode", "frequency (Hz)", "period (s)");
+  if (!quiet) fmt::print("{:>5} {:>14} {:>14}\n", "mode", "frequency (Hz)", "period (s)");
   for (Index k = 0; k < modes.omega.size(); ++k) {
     const double f = modes.frequency_hz[k];
     const double T = f > 0 ? 1.0 / f : INFINITY;
     std::fprintf(out, "%ld,%.17g,%.17g,%.17g\n", static_cast<long>(k + 1), f, T, modes.omega[k]);
-    fmt::print("{:>5} {:>14.6g} {:>14.6g}\n", k + 1, f, T);
+    if (!quiet) fmt::print("{:>5} {:>14.6g} {:>14.6g}\n", k + 1, f, T);
   }
   std::fclose(out);
-  fmt::print("wrote {}\n", (dir / "modes.csv").string());
+  if (!quiet) fmt::print("wrote {}\n", (dir / "modes.csv").string());
   return 0;
 }
 
@@ -508,6 +499,11 @@ int cmd_bench(const std::string& file, double duration) {
     throw InputError({Diagnostic{
         file, 0, 0, "dynamics", "'seaflex bench' needs a dynamics section (time_step, duration)"}});
   io::DynamicsSettings d = *model.dynamics;
+  if (duration / d.time_step > 2e9)  // the loader's limit on dynamics.duration
+    throw InputError({Diagnostic{
+        file, 0, 0, "--duration",
+        fmt::format("{:g} s at a time step of {:g} s is {:.3g} steps, more than the limit of 2e9",
+                    duration, d.time_step, duration / d.time_step)}});
   if (duration > 0.0)
     d.duration = std::max(d.time_step, std::round(duration / d.time_step) * d.time_step);
   fmt::print("model: {} ({} coordinates, {} constraint rows)\n", file,
@@ -550,6 +546,7 @@ int cmd_bench(const std::string& file, double duration) {
 int main(int argc, char** argv) {
   CLI::App app{"seaflex: flexible multibody dynamics of offshore structures (ANCF beams)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", fmt::format("seaflex {}", SEAFLEX_VERSION));
   std::string file;
   std::string dir = "results";
   bool quiet = false;
@@ -559,8 +556,8 @@ int main(int argc, char** argv) {
   const auto add_threads = [&](CLI::App* cmd) {
     cmd->add_option("--threads", threads,
                     "threads of the element loops (default: OMP_NUM_THREADS if set, else 1); "
-                    "results are identical for any count")
-        ->check(CLI::PositiveNumber);
+                    "results are identical for any count; at most the machine's hardware threads")
+        ->check(cli::thread_count());
   };
 
   auto* check = app.add_subcommand("check", "validate a model and print a summary");
@@ -568,7 +565,7 @@ int main(int argc, char** argv) {
   auto* statics = app.add_subcommand("statics", "static equilibrium; writes DIR/statics.csv");
   statics->add_option("MODEL", file, "model file (YAML)")->required();
   statics->add_option("-o,--output", dir, "output directory")->capture_default_str();
-  statics->add_flag("-q,--quiet", quiet, "no progress messages");
+  statics->add_flag("-q,--quiet", quiet, "print only errors and warnings");
   add_threads(statics);
   OutputOptions output_options;
   const auto add_format = [&](CLI::App* cmd) {
@@ -583,12 +580,12 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "dynamic simulation; writes DIR/timeseries.csv");
   run->add_option("MODEL", file, "model file (YAML)")->required();
   run->add_option("-o,--output", dir, "output directory")->capture_default_str();
-  run->add_flag("-q,--quiet", quiet, "no progress line");
+  run->add_flag("-q,--quiet", quiet, "print only errors and warnings");
   double checkpoint_every = 0.0;
   run->add_option("--checkpoint-every", checkpoint_every,
                   "write DIR/checkpoint.txt every T seconds of simulated time (a whole number "
                   "of output intervals), to continue with seaflex resume DIR")
-      ->check(CLI::PositiveNumber);
+      ->check(cli::finite_positive(1e9, "s"));
   add_threads(run);
   add_format(run);
   auto* modes = app.add_subcommand(
@@ -596,11 +593,11 @@ int main(int argc, char** argv) {
   modes->add_option("MODEL", file, "model file (YAML)")->required();
   modes->add_option("-o,--output", dir, "output directory")->capture_default_str();
   modes->add_option("-n,--count", count, "number of modes")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::whole_number(1000000))
       ->capture_default_str();
   modes->add_flag("--about-initial", about_initial,
                   "linearize about the initial state instead of statics");
-  modes->add_flag("-q,--quiet", quiet, "no progress messages");
+  modes->add_flag("-q,--quiet", quiet, "print only errors and warnings");
   add_threads(modes);
 
   double bench_duration = 0.0;
@@ -610,14 +607,14 @@ int main(int argc, char** argv) {
   bench
       ->add_option("--duration", bench_duration,
                    "simulated time (s) instead of the model's duration")
-      ->check(CLI::PositiveNumber);
+      ->check(cli::finite_positive(1e9, "s"));
   add_threads(bench);
 
   std::string resume_dir;
   auto* resume =
       app.add_subcommand("resume", "continue a run from its last checkpoint (DIR/checkpoint.txt)");
   resume->add_option("DIR", resume_dir, "output directory of the checkpointed run")->required();
-  resume->add_flag("-q,--quiet", quiet, "no progress line");
+  resume->add_flag("-q,--quiet", quiet, "print only errors and warnings");
   add_threads(resume);
 
   std::string plot_dir, plot_out;
@@ -637,6 +634,12 @@ int main(int argc, char** argv) {
   }
   try {
     if (threads > 0) set_threads(threads);
+    if (threads == 0 && seaflex::threads() > cli::hardware_threads())  // from OMP_NUM_THREADS
+      throw InputError({Diagnostic{
+          "OMP_NUM_THREADS", 0, 0, "",
+          fmt::format("{} threads are more than the {} hardware threads of this machine; set at "
+                      "most {} (or use --threads)",
+                      seaflex::threads(), cli::hardware_threads(), cli::hardware_threads())}});
     install_interrupt_handlers();  // SIGINT/SIGTERM end a run after its current step
     if (*check) return cmd_check(file);
     if (*statics) return cmd_statics(file, dir, quiet, output_options);

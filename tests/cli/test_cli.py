@@ -490,7 +490,7 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         files = {}
         for threads in ["1", "2"]:
             out = os.path.join(self.dir, "t" + threads)
-            r = run("run", path, "-o", out, "--quiet", "--threads", threads)
+            r = run("run", path, "-o", out, "--threads", threads)  # not -q: the summary is read
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("(%s thread%s)" % (threads, "" if threads == "1" else "s"), r.stdout)
             for name in ["statics.csv", "timeseries.csv"]:
@@ -514,7 +514,7 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         files = {}
         for threads in ["1", "2"]:
             out = os.path.join(self.dir, "ga" + threads)
-            r = run("run", path, "-o", out, "--quiet", "--threads", threads)
+            r = run("run", path, "-o", out, "--threads", threads)  # not -q: the summary is read
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("200 steps of 0.1 s", r.stdout)
             with open(os.path.join(out, "timeseries.csv"), "rb") as f:

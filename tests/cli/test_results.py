@@ -173,7 +173,7 @@ output:
         stale = os.path.join(out, "riser.along.csv")
         with open(stale, "w") as f:
             f.write("from an earlier run\n")
-        r = run("run", self.model(text), "-o", out, "-q")
+        r = run("run", self.model(text), "-o", out)  # not -q: the "wrote" line is read
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("timeseries.h5", r.stdout)
         self.assertFalse(os.path.exists(os.path.join(out, "timeseries.csv")))

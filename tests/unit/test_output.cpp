@@ -116,7 +116,8 @@ TEST(Output, ErrorsAreLocatedWithSuggestions) {
             std::string::npos)
       << e;
   EXPECT_NE(e.find("m.yaml:17:3: output.interval: unknown key; expected one of: "
-                   "beam_gauss_points, beam_results, bodies, channels, format, vtk"),
+                   "beam_gauss_points, beam_results, bodies, body_angular_velocity, "
+                   "channels, energies, format, node_slopes, support_reactions, vtk"),
             std::string::npos)
       << e;
 }

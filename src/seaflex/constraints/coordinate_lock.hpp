@@ -24,6 +24,11 @@ class CoordinateLock : public Constraint {
                               Eigen::Ref<MatX> H) const override;
   std::string row_name(Index row) const override;
 
+  /// The body and the local coordinates held, one per row (support reactions read them).
+  const Body& body() const { return body_; }
+  const std::vector<Index>& locals() const { return locals_; }
+  const std::vector<std::string>& labels() const { return labels_; }
+
  private:
   const Body& body_;
   std::vector<Index> locals_;

@@ -69,6 +69,12 @@ void load_output(const YAML::Node& node, LoadContext& ctx) {
                                           : OutputSettings::BeamResults::kNone;
   out.beam_gauss_points = r.integer("beam_gauss_points", Need::kOptional, 0, 10).value_or(2);
   if (r.has("vtk")) out.vtk = r.choice("vtk", Need::kRequired, {"true", "false"}) == "true";
+  // optional channels (io/optional_channels.hpp)
+  for (auto [key, flag] : {std::pair{"node_slopes", &out.node_slopes},
+                           std::pair{"support_reactions", &out.support_reactions},
+                           std::pair{"energies", &out.energies},
+                           std::pair{"body_angular_velocity", &out.body_angular_velocity}})
+    if (r.has(key)) *flag = r.choice(key, Need::kRequired, {"true", "false"}) == "true";
   r.finish();
 }
 

@@ -13,6 +13,7 @@
 #include "seaflex/forces/rotational_spring.hpp"
 #include "seaflex/forces/spring_damper.hpp"
 #include "seaflex/io/load_context.hpp"
+#include "seaflex/io/optional_channels.hpp"
 #include "seaflex/solvers/constraint_audit.hpp"
 
 namespace seaflex::io {
@@ -250,6 +251,7 @@ ChannelList model_channels(const Model& model) {
       list.push_back({probe.first, [ocean = model.ocean, p = probe.second](const State& s) {
                         return ocean->elevation(p.x(), p.y(), s.t);
                       }});
+  add_optional_channels(model, list);
   return list;
 }
 

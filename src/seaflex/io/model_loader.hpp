@@ -52,6 +52,13 @@ struct OutputSettings {
   int beam_gauss_points = 2;
   /// ParaView time series (vtk/ directory).
   bool vtk = false;
+  /// Optional channels (io/optional_channels.hpp), written after all the others: beam
+  /// node slopes r', support reactions, energies of each body, rigid-body angular
+  /// velocity in body axes.
+  bool node_slopes = false;
+  bool support_reactions = false;
+  bool energies = false;
+  bool body_angular_velocity = false;
 };
 
 struct Model {
@@ -70,7 +77,8 @@ struct Model {
   OutputSettings output;
 };
 
-/// The system's channels followed by the model's own (wave elevation probes).
+/// The system's channels followed by the model's own (wave elevation probes), then the
+/// optional channels that the output section asks for.
 ChannelList model_channels(const Model& model);
 
 /// Loads and validates a model file. Throws InputError listing every problem.

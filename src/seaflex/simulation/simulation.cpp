@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/interrupt.hpp"
+#include "seaflex/simulation/growth_monitor.hpp"
 
 namespace seaflex {
 
@@ -103,6 +105,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
   SimulationReport& report = pos.report;
   rows_ = pos.rows;
   const double scale = pos.scale;  // for the divergence test
+  GrowthMonitor growth;            // unbounded growth while still finite (growth_monitor.hpp)
   try {
     if (fresh) {
       dae_.start(state);
@@ -131,10 +134,27 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
             "elements, short elements) or a body is unconstrained",
             t_new, state.q.allFinite() && state.v.allFinite() ? "runaway" : "NaN/Inf",
             dae_.coordinate_name(worst), state.q[worst], state.v[worst], h, integrator_.name());
+      } else if (const auto g = growth.observe(state.v.norm())) {
+        failure = fmt::format(
+            "t = {:.6g} s: the solution grows without bound (the velocity norm grew by a factor "
+            "{:.3g} per step over the last {} steps, now {:.3g}, largest at {}); the time step "
+            "{:.3g} s is likely above the stability limit of {} for this model",
+            t_new, *g, GrowthMonitor::kWindows * GrowthMonitor::kWindow, state.v.norm(),
+            dae_.coordinate_name(worst_coordinate(state)), h, integrator_.name());
+        if (integrator_.name() == "rk4") {
+          // RK4 is stable for omega h < 2 sqrt(2); the growth per step tells which omega h
+          const double wh = GrowthMonitor::rk4_omega_h(*g);
+          failure += fmt::format(
+              ": rk4 is stable for omega h < 2.83, and this growth is that of a mode of omega = "
+              "{:.3g} rad/s ({:.3g} Hz, omega h = {:.3g}); use time_step < {:.3g} s or "
+              "integrator: generalized_alpha",
+              wh / h, wh / h / (2.0 * std::numbers::pi), wh, 2.0 * std::sqrt(2.0) * h / wh);
+        }
       }
       if (!failure.empty()) {
         if (adaptive && level < levels_) {  // retry from the saved state with h / 2
           state = saved_;
+          growth.reset();
           ++level;
           successes = 0;
           ++report.rejected_steps;

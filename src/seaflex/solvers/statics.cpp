@@ -75,6 +75,9 @@ class NewtonStatics {
     q_scale_ = q_scale;
     const double c_tol = 1e-10 * q_scale;
     res = residual(state, load_factor);
+    criterion_ = StaticsCriterion::kResidual;
+    update_ = 0.0;
+    last_fall_ = 0.0;
     for (int it = 0; it < s_.max_iterations; ++it) {
       if (!res.finite) return false;
       if (res.force <= s_.tolerance && res.constraint <= c_tol) return true;
@@ -134,11 +137,18 @@ class NewtonStatics {
       // onto the mirror branch of its joint conditions, e.g. upside down)
       dx_ *= dae_.step_scale(state, dx_.head(n_));
       const double update = dx_.head(n_).lpNorm<Eigen::Infinity>();
+      update_ = update;
       start_ = state;
       const double g0 = dx_.head(n_).dot(r_);
+      const double before = res.force;
       take_step(state, 1.0, load_factor, res);
       if (line_search) this->line_search(state, load_factor, g0, res);
-      if (res.finite && update <= 1e-13 * q_scale && res.constraint <= c_tol) return true;
+      last_fall_ = res.finite && res.force > 0.0 ? before / res.force : 0.0;
+      if (res.finite && res.force <= s_.tolerance && res.constraint <= c_tol) return true;
+      if (res.finite && update <= 1e-13 * q_scale && res.constraint <= c_tol) {
+        criterion_ = StaticsCriterion::kRoundOff;
+        return true;
+      }
     }
     return res.finite && res.force <= s_.tolerance && res.constraint <= c_tol;
   }
@@ -223,7 +233,10 @@ class NewtonStatics {
   Index n_, m_;
   VecX r_, rhs_, dx_;
   State start_;
-  std::string failure_;       // why the last solve failed, when it was not plain non-convergence
+  std::string failure_;  // why the last solve failed, when it was not plain non-convergence
+  StaticsCriterion criterion_ = StaticsCriterion::kResidual;  // what ended the last solve
+  double update_ = 0.0;       // largest coordinate change of the last iteration (m)
+  double last_fall_ = 0.0;    // residual before / after the last iteration (> 1: it fell)
   double eps_ = 0.0;          // the regularization of the last Newton matrix
   int driven_ = 0;            // consecutive iterations whose step only the regularization held
   double force_scale_ = 1.0;  // largest force term at the last residual (N)
@@ -231,6 +244,18 @@ class NewtonStatics {
 };
 
 }  // namespace
+
+std::string describe_convergence(const StaticsReport& r) {
+  if (r.criterion == StaticsCriterion::kRoundOff)
+    return fmt::format(
+        "Newton update {:.2e} m <= 1e-13 x the model size ({:.3g} m): the force residual, "
+        "{:.2e} N, is at its round-off floor; constraint violation {:.2e}",
+        r.update, r.length_scale, r.residual * r.force_scale, r.constraint_violation);
+  return fmt::format(
+      "relative residual {:.2e} <= tolerance {:.2e} (of the largest force term, {:.3g} N); "
+      "constraint violation {:.2e}",
+      r.residual, r.tolerance, r.force_scale, r.constraint_violation);
+}
 
 StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings& settings,
                             const StaticsProgress& progress) {
@@ -262,20 +287,43 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
       ++report.increments;
       report.residual = res.force;
       report.constraint_violation = res.constraint;
-      if (progress) progress(factor, iterations, res.force);
+      report.criterion = newton.criterion_;
+      report.tolerance = settings.tolerance;
+      report.force_scale = newton.force_scale_;
+      report.update = newton.update_;
+      report.length_scale = newton.q_scale_;
+      if (progress) progress(factor, iterations, report);
       continue;
     }
     state = saved;
+    const double tried = increment;
     increment *= 0.5;
     if (increment < settings.min_increment) {
+      // the advice follows the cause: a singular matrix or an element that cannot be
+      // evaluated (newton.failure_), NaN, Newton still converging when it ran out of
+      // iterations (more iterations cure it), or no convergence even at the smallest
+      // increment (the model, not the increment, is the problem)
+      std::string cause;
+      if (!newton.failure_.empty())
+        cause = newton.failure_;
+      else if (!res.finite)
+        cause = "NaN or Inf in the residual: a force cannot be evaluated at this state";
+      else if (newton.last_fall_ >= 2.0)
+        cause = fmt::format(
+            "Newton was still converging (its last iteration reduced the residual {:.3g}-fold) "
+            "when it reached statics.max_iterations ({}): raise max_iterations",
+            newton.last_fall_, settings.max_iterations);
+      else
+        cause = fmt::format(
+            "no convergence even with the load increment halved to {:.3g} (statics."
+            "min_increment {:g}): the model may have no equilibrium near this load (a "
+            "mechanism: check the supports and joints; a buckling or snap-through load; a "
+            "load larger than the structure can carry)",
+            tried, settings.min_increment);
       throw SolverError(
           fmt::format("statics did not converge at load factor {:.6g} (last converged {:.6g}): "
                       "relative residual {:.3e} after {} iterations, largest at {}; {}",
-                      target, factor, res.force, iterations, dae.coordinate_name(res.worst),
-                      !newton.failure_.empty() ? newton.failure_
-                      : res.finite ? "the structure may be unstable or a mechanism (check "
-                                     "supports), or the load too large for one increment"
-                                   : "NaN or Inf in the residual"),
+                      target, factor, res.force, iterations, dae.coordinate_name(res.worst), cause),
           settings.time);
     }
   }

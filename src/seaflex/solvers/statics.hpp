@@ -24,15 +24,33 @@ struct StaticsSettings {
   LinearSolverKind linear_solver = kDefaultLinearSolver;  ///< backend of the Newton solves
 };
 
-struct StaticsReport {
-  int increments = 0;                 ///< load increments taken
-  int iterations = 0;                 ///< Newton iterations in all
-  double residual = 0.0;              ///< final relative force residual
-  double constraint_violation = 0.0;  ///< final max |C|
+/// Which test ended the last increment's Newton iterations.
+enum class StaticsCriterion {
+  kResidual,  ///< force residual <= tolerance x the largest force term, |C| <= 1e-10 L
+  kRoundOff,  ///< Newton update <= 1e-13 L with |C| <= 1e-10 L: the residual is at its
+              ///< round-off floor (e.g. a structure whose forces are all round-off)
 };
 
-/// Called after each converged increment: (load factor, iterations, residual).
-using StaticsProgress = std::function<void(double, int, double)>;
+struct StaticsReport {
+  int increments = 0;                                        ///< load increments taken
+  int iterations = 0;                                        ///< Newton iterations in all
+  double residual = 0.0;                                     ///< final relative force residual
+  double constraint_violation = 0.0;                         ///< final max |C|
+  StaticsCriterion criterion = StaticsCriterion::kResidual;  ///< of the last increment
+  double tolerance = 0.0;                                    ///< settings.tolerance, for the report
+  double force_scale = 0.0;   ///< the largest force term at the end (N)
+  double update = 0.0;        ///< largest coordinate change of the last iteration (m)
+  double length_scale = 1.0;  ///< L = max(1 m, |q|_inf) (m)
+};
+
+/// One line on how statics converged: the criterion met and its numbers, e.g.
+/// "relative residual 3.1e-12 <= tolerance 1e-08 (of the largest force, 1.2e+04 N),
+/// constraint violation 2.0e-15 m".
+std::string describe_convergence(const StaticsReport& report);
+
+/// Called after each converged increment: (load factor, iterations of the increment, the
+/// report so far, whose residual and criterion are those of the increment).
+using StaticsProgress = std::function<void(double, int, const StaticsReport&)>;
 
 /// Solves for equilibrium starting from state (q, lambda used as the initial guess).
 /// On success the state holds q, v = 0 and the multipliers. Throws SolverError, naming
