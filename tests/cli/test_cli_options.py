@@ -232,7 +232,6 @@ statics: {load_steps: 4}
 
     # the lead removes this decorator when integrators/generalized_alpha.cpp prints the
     # messages below (issue 16); until then the first case fails as expected
-    @unittest.expectedFailure
     def test_generalized_alpha_newton_failure_messages(self):
         # EXPECTED MESSAGES FOR THE LEAD (integrators/generalized_alpha.cpp is being
         # rewritten there; this test states what the rewrite must print). A Newton failure

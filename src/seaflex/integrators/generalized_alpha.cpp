@@ -293,7 +293,8 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   int restart_at = 0;  // the iterations before the last restart from the predictor
   for (int it = 1;; ++it) {
     if (it - restart_at > s_.max_iterations) {
-      const bool contracting = last_theta > 0.0 && last_theta < 1.0;
+      const bool one_update = last_theta == 0.0 && !coasting;  // no rate observed yet
+      const bool contracting = last_theta > 0.0 && last_theta < 0.5 && !coasting;
       return fail(fmt::format(
           "Newton did not converge in {} iterations (step {:g} s): the last update of the "
           "accelerations was {:.3g} (tolerance {:.3g}), largest at {}, of the multipliers "
@@ -302,7 +303,8 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
           index2 ? fmt::format(", of the constraint projection {:.3g} m (tolerance {:.3g} m)",
                                last_dy, q_tol)
                  : std::string(),
-          contracting
+          one_update ? std::string("one iteration cannot show convergence; raise max_iterations")
+          : contracting
               ? fmt::format("the iterations converge, but slowly (each update {:.2g} times the "
                             "previous); raise max_iterations, or use newton: full",
                             last_theta)
