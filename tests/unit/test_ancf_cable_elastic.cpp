@@ -1,7 +1,8 @@
 // Elastic force models of the ANCF cable (thesis 2.2.3): forces against -dU/de, tangents
 // against central differences of the forces, rigid motion gives zero force, the L2 closed
-// form equals the quadrature of the exact Green-Lagrange model, and the constant matrices
-// equal eq. (27) and (42).
+// form equals the quadrature of the exact Green-Lagrange model, the constant matrices
+// equal eq. (27) and (42), and the two exact curvatures (per reference length, the
+// default, and per deformed length, thesis eq. 14) behave as they must under a stretch.
 #include "seaflex/elements/ancf_cable_elastic.hpp"
 
 #include <gtest/gtest.h>
@@ -75,6 +76,7 @@ const ModelCase kModels[] = {
     {"axial L1", &CableElasticity::add_axial_l1, false},
     {"axial L2", &CableElasticity::add_axial_l2, true},
     {"bending exact", &CableElasticity::add_bending_exact, true},
+    {"bending exact_deformed", &CableElasticity::add_bending_exact_deformed, true},
     {"bending T1", &CableElasticity::add_bending_t1, true},
     {"bending T2", &CableElasticity::add_bending_t2, true},
 };
@@ -108,7 +110,8 @@ TEST(CableElastic, ForcesAreEnergyGradients) {
 // a straight, unstretched element moved and rotated rigidly carries no elastic force
 TEST(CableElastic, RigidMotionGivesZeroForce) {
   for (auto axial : {AxialModel::kExact, AxialModel::kL1, AxialModel::kL2})
-    for (auto bending : {BendingModel::kExact, BendingModel::kT1, BendingModel::kT2}) {
+    for (auto bending : {BendingModel::kExact, BendingModel::kExactDeformed, BendingModel::kT1,
+                         BendingModel::kT2}) {
       const CableElasticity el(kL, kEA, kEI, axial, bending, 5);
       for (const Vec3& dir : {Vec3(1, 0, 0), Vec3(0.3, -0.5, 0.8).normalized(), Vec3(0, 0, -1)}) {
         Vec12 Q = Vec12::Zero();
@@ -169,6 +172,42 @@ TEST(CableElastic, CircularArcCurvature) {
   Vec12 Q1 = Vec12::Zero(), Q2 = Vec12::Zero();
   EXPECT_NEAR(el.add_bending_t1(e, Q1, nullptr) / U, 1.0, 1e-2);
   EXPECT_NEAR(el.add_bending_t2(e, Q2, nullptr) / U, 1.0, 1e-2);
+}
+
+// The two exact curvatures under a uniform scaling r(x) -> s r(x) of a bent element (all
+// nodal positions and slopes times s, which stretches the axis by s without bending it
+// further): the curvature per reference length kappa_0 = |r' x r''| / |r'|^2 is
+// unchanged, so its energy is too and its force does no work on the scaling (Q.e = 0);
+// thesis eq. (14), kappa = kappa_0 / |r'|, scales as 1/s and its energy as 1/s^2.
+// Tolerances: 1e-13 relative is round-off on sums of 5 terms of size U.
+TEST(CableElastic, ExactCurvatureIsInvariantUnderStretch) {
+  const CableElasticity ref(kL, kEA, kEI, AxialModel::kExact, BendingModel::kExact, 5);
+  const CableElasticity def(kL, kEA, kEI, AxialModel::kExact, BendingModel::kExactDeformed, 5);
+  const Vec12 e = deformed(0.5);
+  Vec12 Q = Vec12::Zero(), Qd = Vec12::Zero(), scratch = Vec12::Zero();
+  const double U = ref.add_bending_exact(e, Q, nullptr);
+  const double Ud = def.add_bending_exact_deformed(e, Qd, nullptr);
+  ASSERT_GT(U, 0.0);
+  for (double s : {0.9, 1.01, 1.5}) {
+    EXPECT_NEAR(ref.add_bending_exact(s * e, scratch, nullptr) / U, 1.0, 1e-13) << s;
+    EXPECT_NEAR(def.add_bending_exact_deformed(s * e, scratch, nullptr) / Ud, 1.0 / (s * s), 1e-13)
+        << s;
+    for (double xi : {0.0, 0.37, 1.0}) {
+      EXPECT_NEAR(ref.curvature(s * e, xi) / ref.curvature(e, xi), 1.0, 1e-13);
+      EXPECT_NEAR(def.curvature(s * e, xi) / def.curvature(e, xi), 1.0 / s, 1e-13);
+    }
+  }
+  // d U(s e)/ds at s = 1 is -Q.e: zero for kappa_0 (the scale of Q.e is |Q||e|),
+  // -2 U for eq. (14)
+  EXPECT_LT(std::abs(Q.dot(e)), 1e-13 * Q.norm() * e.norm());
+  EXPECT_NEAR(-Qd.dot(e) / (-2.0 * Ud), 1.0, 1e-12);
+  // the two curvatures differ by the stretch |r'| at every point
+  for (double xi : {0.0, 0.37, 1.0}) {
+    const Vec3 a = relative_nodes(e) * shape_dx(xi, kL);
+    EXPECT_NEAR(ref.curvature(e, xi) / (def.curvature(e, xi) * a.norm()), 1.0, 1e-13);
+    EXPECT_NEAR((ref.curvature_vector(e, xi) - a.norm() * def.curvature_vector(e, xi)).norm(), 0.0,
+                1e-13 * ref.curvature(e, xi));
+  }
 }
 
 // L1's constant strain: a uniformly stretched element has eps = (d - l)/l and the

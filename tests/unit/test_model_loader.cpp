@@ -227,6 +227,17 @@ INSTANTIATE_TEST_SUITE_P(
                 "exact "
                 "curvature nothing restrains the length of the nodal slopes r'"},
         BadCase{
+            "L1 with the thesis's exact bending",
+            replace(kBase, "    density: 7850\n",
+                    "    density: 7850\n    axial_model: L1\n    bending_model: exact_deformed\n"),
+            "m.yaml:11:18: bodies.beam.axial_model: L1 needs bending_model T1 or T2: with the "
+            "exact curvature nothing restrains the length of the nodal slopes r'"},
+        BadCase{
+            "unknown bending model",
+            replace(kBase, "    density: 7850\n", "    density: 7850\n    bending_model: thesis\n"),
+            "m.yaml:11:20: bodies.beam.bending_model: unknown value 'thesis'; expected one of: "
+            "exact, exact_deformed, T1, T2"},
+        BadCase{
             "twice-held coordinate", kBase + "  - {body: beam, node: 0, type: pinned}\n",
             "m.yaml:13:24: supports[1].node: beam.n0 x, y, z already held by an earlier support: "
             "a coordinate can be held only once"},

@@ -44,7 +44,8 @@ TEST(SystemJacobians, NewtonMatrixMatchesFiniteDifferences) {
   using ancf_cable::AxialModel;
   using ancf_cable::BendingModel;
   for (auto axial : {AxialModel::kExact, AxialModel::kL1, AxialModel::kL2})
-    for (auto bending : {BendingModel::kExact, BendingModel::kT1, BendingModel::kT2}) {
+    for (auto bending : {BendingModel::kExact, BendingModel::kExactDeformed, BendingModel::kT1,
+                         BendingModel::kT2}) {
       auto sys = make_system(axial, bending);
       State s = sys->initial_state();
       s.q += 0.02 * VecX::Random(s.q.size());  // a deformed configuration

@@ -23,6 +23,8 @@ std::string_view to_string(BendingModel m) {
   switch (m) {
     case BendingModel::kExact:
       return "exact";
+    case BendingModel::kExactDeformed:
+      return "exact_deformed";
     case BendingModel::kT1:
       return "T1";
     case BendingModel::kT2:
@@ -107,6 +109,9 @@ double CableElasticity::add_forces(const Vec12& e, Vec12& Q, Mat12* K) const {
     case BendingModel::kExact:
       U += add_bending_exact(e, Q, K);
       break;
+    case BendingModel::kExactDeformed:
+      U += add_bending_exact_deformed(e, Q, K);
+      break;
     case BendingModel::kT1:
       U += add_bending_t1(e, Q, K);
       break;
@@ -186,8 +191,19 @@ double CableElasticity::add_axial_l2(const Vec12& e, Vec12& Q, Mat12* K) const {
 }
 
 double CableElasticity::add_bending_exact(const Vec12& e, Vec12& Q, Mat12* K) const {
+  return add_bending_power(e, Q, K, 2);  // kappa_0 = d theta / dx (Reissner 1972)
+}
+
+double CableElasticity::add_bending_exact_deformed(const Vec12& e, Vec12& Q, Mat12* K) const {
+  return add_bending_power(e, Q, K, 3);  // thesis eq. (14)
+}
+
+double CableElasticity::add_bending_power(const Vec12& e, Vec12& Q, Mat12* K, int power) const {
+  // f = kappa^2 = N u with N = |r' x r''|^2 = g h - p^2 and u = g^-n, n = power:
+  //   du/da = -2n u/g a,   d2u/da2 = -2n u/g I + 4n(n+1) u/g^2 a a^T
   const Mat34 R = relative_nodes(e);
   const Mat3 I = Mat3::Identity();
+  const double n = power;
   double U = 0.0;
   for (std::size_t k = 0; k < w_.size(); ++k) {
     const Vec4& ds = ds_[k];
@@ -196,13 +212,15 @@ double CableElasticity::add_bending_exact(const Vec12& e, Vec12& Q, Mat12* K) co
     const Vec3 b = R * dds;  // r''
     const double g = a.dot(a), h = b.dot(b), p = a.dot(b);
     const double N = g * h - p * p;  // |r' x r''|^2
-    const double u = 1.0 / (g * g * g);
-    const double f = N * u;  // kappa^2, thesis eq. (14)
+    double gn = g;
+    for (int i = 1; i < power; ++i) gn *= g;
+    const double u = 1.0 / gn;
+    const double f = N * u;  // kappa^2: eq. (14) squared for n = 3
     const double w = 0.5 * EI_ * w_[k];
-    U += w * f;  // thesis eq. (13)
+    U += w * f;  // thesis eq. (13), over the reference length
     const Vec3 Na = 2.0 * h * a - 2.0 * p * b;
     const Vec3 Nb = 2.0 * g * b - 2.0 * p * a;
-    const Vec3 ua = -6.0 * u / g * a;
+    const Vec3 ua = (-2.0 * n * u / g) * a;
     const Vec3 fa = Na * u + N * ua;
     const Vec3 fb = Nb * u;
     add_to(Q, fa * ds.transpose() + fb * dds.transpose(), -w);
@@ -210,7 +228,7 @@ double CableElasticity::add_bending_exact(const Vec12& e, Vec12& Q, Mat12* K) co
       const Mat3 Naa = 2.0 * h * I - 2.0 * outer(b, b);
       const Mat3 Nab = 4.0 * outer(a, b) - 2.0 * outer(b, a) - 2.0 * p * I;
       const Mat3 Nbb = 2.0 * g * I - 2.0 * outer(a, a);
-      const Mat3 uaa = (-6.0 * u / g) * I + (48.0 * u / (g * g)) * outer(a, a);
+      const Mat3 uaa = (-2.0 * n * u / g) * I + (4.0 * n * (n + 1.0) * u / (g * g)) * outer(a, a);
       const Mat3 faa = Naa * u + outer(Na, ua) + outer(ua, Na) + N * uaa;
       const Mat3 fab = Nab * u + outer(ua, Nb);
       const Mat3 fbb = Nbb * u;
@@ -259,11 +277,17 @@ double CableElasticity::axial_strain(const Vec12& e, double xi) const {
   return 0.5 * (a.dot(a) - 1.0);
 }
 
-double CableElasticity::curvature(const Vec12& e, double xi) const {
+Vec3 CableElasticity::curvature_vector(const Vec12& e, double xi) const {
   const Mat34 R = relative_nodes(e);
   const Vec3 a = R * shape_dx(xi, l_);
   const Vec3 b = R * shape_dxx(xi, l_);
-  return a.cross(b).norm() / std::pow(a.norm(), 3);  // thesis eq. (14)
+  const double g = a.dot(a);
+  if (bending_ == BendingModel::kExact) return a.cross(b) / g;  // d theta / dx
+  return a.cross(b) / (g * std::sqrt(g));                       // thesis eq. (14)
+}
+
+double CableElasticity::curvature(const Vec12& e, double xi) const {
+  return curvature_vector(e, xi).norm();
 }
 
 }  // namespace seaflex::ancf_cable

@@ -1,8 +1,9 @@
 // Elastic forces of the ANCF cable element, thesis section 2.2.3, with exact tangents.
 //
-// Strain energy (eq. 15): U = 1/2 int_0^l (EA eps^2 + EI kappa^2) dx, where
+// Strain energy (eq. 15): U = 1/2 int_0^l (EA eps^2 + EI kappa^2) dx, x the reference
+// (unstretched) arc length, where
 //   eps   = 1/2 (r'.r' - 1)                              (eq. 12, Green-Lagrange)
-//   kappa = |r' x r''| / |r'|^3                          (eq. 14)
+//   kappa = |r' x r''| / |r'|^n                          (n = 3: eq. 14; n = 2: below)
 // Axial models:
 //   kExact  Green-Lagrange strain by Gauss quadrature (the default).
 //   kL1     constant strain eps = (d - l)/l from the node distance d (eq. 23-27).
@@ -15,8 +16,18 @@
 //           Its energy carries a round-off floor of about EA l 1e-16 (the closed form
 //           subtracts terms of size l), far below any physical strain.
 // Bending models:
-//   kExact  kappa^2 = (g h - p^2) / g^3, g = r'.r', h = r''.r'', p = r'.r'' (identity
-//           |a x b|^2 = |a|^2 |b|^2 - (a.b)^2 applied to eq. 14), Gauss quadrature.
+//   kExact  the curvature per reference length, kappa_0 = |r' x r''| / |r'|^2 = d theta/dx
+//           (theta the angle of the tangent; the elastic line of Reissner 1972, ZAMP
+//           23:795-804, and of the geometrically exact beam of Simo & Vu-Quoc 1986):
+//           kappa_0^2 = (g h - p^2) / g^2, g = r'.r', h = r''.r'', p = r'.r''. Invariant
+//           under a uniform scaling of r(x): a pure couple M bends the axis into a circle
+//           without stretching it (the default; see docs/theory/ancf_cable.md).
+//   kExactDeformed  the thesis's curvature per deformed length, eq. (14):
+//           kappa^2 = (g h - p^2) / g^3 (identity |a x b|^2 = |a|^2 |b|^2 - (a.b)^2),
+//           integrated over the reference length (eq. 13). Since kappa = kappa_0 / |r'|,
+//           stretching lowers the bending energy: a couple M lengthens the axis by the
+//           strain eps ~ M^2 / (EI EA). Kept for comparison with the thesis.
+//   Both exact models by Gauss quadrature, with one kernel for the power g^-n.
 //   kT1     kappa ~ |r''| (eq. 36-42): constant stiffness K_t = EI int S''^T S'' dx.
 //   kT2     kappa^2 ~ r''.r'' / fbar^4 with the element-average stretch
 //           fbar^2 = (1/l) int r'.r' dx (eq. 51-55). Implemented as the potential
@@ -36,9 +47,10 @@
 namespace seaflex::ancf_cable {
 
 enum class AxialModel { kExact, kL1, kL2 };
-enum class BendingModel { kExact, kT1, kT2 };
+enum class BendingModel { kExact, kExactDeformed, kT1, kT2 };
 
-/// "exact", "L1", "L2"; "exact", "T1", "T2". Used by the model loader and reports.
+/// "exact", "L1", "L2"; "exact", "exact_deformed", "T1", "T2". Used by the model loader and
+/// reports.
 std::string_view to_string(AxialModel m);
 std::string_view to_string(BendingModel m);
 
@@ -61,12 +73,20 @@ class CableElasticity {
   double add_axial_exact(const Vec12& e, Vec12& Q, Mat12* K) const;
   double add_axial_l1(const Vec12& e, Vec12& Q, Mat12* K) const;
   double add_axial_l2(const Vec12& e, Vec12& Q, Mat12* K) const;
+  /// kappa_0 = |r' x r''| / |r'|^2, per reference length (the default exact model).
   double add_bending_exact(const Vec12& e, Vec12& Q, Mat12* K) const;
+  /// kappa = |r' x r''| / |r'|^3, per deformed length (thesis eq. 14).
+  double add_bending_exact_deformed(const Vec12& e, Vec12& Q, Mat12* K) const;
   double add_bending_t1(const Vec12& e, Vec12& Q, Mat12* K) const;
   double add_bending_t2(const Vec12& e, Vec12& Q, Mat12* K) const;
 
-  /// Axial strain (eq. 12) and curvature (eq. 14) at xi, whatever the selected model.
+  /// Green-Lagrange axial strain (eq. 12) at xi, whatever the selected model.
   double axial_strain(const Vec12& e, double xi) const;
+  /// Curvature vector r' x r'' / |r'|^n of the selected bending model at xi (1/m): n = 2
+  /// (per reference length) for kExact, n = 3 (thesis eq. 14) for kExactDeformed and for
+  /// T1 and T2, which approximate eq. (14). EI times it is the bending moment vector.
+  Vec3 curvature_vector(const Vec12& e, double xi) const;
+  /// |curvature_vector(e, xi)| (1/m).
   double curvature(const Vec12& e, double xi) const;
 
   double length() const { return l_; }
@@ -74,6 +94,9 @@ class CableElasticity {
   BendingModel bending_model() const { return bending_; }
 
  private:
+  // the exact bending energy 1/2 EI int |r' x r''|^2 / |r'|^(2 n) dx for n = power
+  double add_bending_power(const Vec12& e, Vec12& Q, Mat12* K, int power) const;
+
   double l_, EA_, EI_;
   AxialModel axial_;
   BendingModel bending_;

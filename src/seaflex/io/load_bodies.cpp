@@ -149,22 +149,24 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
     options.axial = *m == "L1"   ? ancf_cable::AxialModel::kL1
                     : *m == "L2" ? ancf_cable::AxialModel::kL2
                                  : ancf_cable::AxialModel::kExact;
-  if (const auto m = r.choice("bending_model", Need::kOptional, {"exact", "T1", "T2"}))
-    options.bending = *m == "T1"   ? ancf_cable::BendingModel::kT1
-                      : *m == "T2" ? ancf_cable::BendingModel::kT2
-                                   : ancf_cable::BendingModel::kExact;
+  if (const auto m =
+          r.choice("bending_model", Need::kOptional, {"exact", "exact_deformed", "T1", "T2"}))
+    options.bending = *m == "T1"               ? ancf_cable::BendingModel::kT1
+                      : *m == "T2"             ? ancf_cable::BendingModel::kT2
+                      : *m == "exact_deformed" ? ancf_cable::BendingModel::kExactDeformed
+                                               : ancf_cable::BendingModel::kExact;
+  const bool exact_bending = options.bending == ancf_cable::BendingModel::kExact ||
+                             options.bending == ancf_cable::BendingModel::kExactDeformed;
   if (const auto g = r.integer("gauss_points", Need::kOptional, 2, 20)) {
     options.gauss_points = *g;
-    if (options.axial != ancf_cable::AxialModel::kExact &&
-        options.bending != ancf_cable::BendingModel::kExact) {
+    if (options.axial != ancf_cable::AxialModel::kExact && !exact_bending) {
       r.error("gauss_points",
               "applies only to the exact axial or bending model; L1, L2, T1 and "
               "T2 are closed forms");
       ok = false;
     }
   }
-  if (options.axial == ancf_cable::AxialModel::kL1 &&
-      options.bending == ancf_cable::BendingModel::kExact) {
+  if (options.axial == ancf_cable::AxialModel::kL1 && exact_bending) {
     // L1 restrains only the chord length, the exact curvature only r' x r'': the length of
     // each nodal slope r' would have no stiffness (a singular tangent)
     r.error("axial_model",

@@ -52,19 +52,19 @@ BeamResults::BeamResults(const AncfBeam& beam, PipePressure pressure, int gauss_
 BeamResults::Point BeamResults::evaluate(const State& state, int element, double xi) const {
   const double l = beam_.element_length(element);
   const ancf_cable::Vec12 e = beam_.element_coordinates(state.q, element);
-  // r' and r'' from the relative node matrix: free of the round-off of far positions
+  // r' (and, in curvature_vector, r'') from the relative node matrix: free of the
+  // round-off of far positions
   const ancf_cable::Mat34 R = ancf_cable::relative_nodes(e);
   Point p;
   p.r = ancf_cable::as_nodes(e) * ancf_cable::shape(xi, l);
   p.rp = R * ancf_cable::shape_dx(xi, l);
-  const Vec3 rpp = R * ancf_cable::shape_dxx(xi, l);
   if (beam_.options().axial == ancf_cable::AxialModel::kL1) {
     p.eps = ((R.col(2) - R.col(0)).norm() - l) / l;  // thesis eq. (24)
   } else {
     p.eps = 0.5 * (p.rp.squaredNorm() - 1.0);  // thesis eq. (12)
   }
-  const double lambda = p.rp.norm();
-  p.m = beam_.section().EI() * p.rp.cross(rpp) / (lambda * lambda * lambda);  // thesis eq. (14)
+  // the curvature of the beam's bending model: the moment the model carries
+  p.m = beam_.section().EI() * beam_.elasticity(element).curvature_vector(e, xi);
   return p;
 }
 

@@ -5,7 +5,9 @@
 //   eps   axial strain of the beam's axial model: Green-Lagrange 1/2 (r'.r' - 1)
 //         (thesis eq. 12) for the exact and L2 models, the chord strain (d - l)/l
 //         (thesis eq. 24) for L1;
-//   kappa = |r' x r''| / |r'|^3                            (thesis eq. 14)
+//   kappa = |r' x r''| / |r'|^n, the curvature of the beam's bending model: n = 2 (per
+//         reference length, d theta/dx) for `exact`, n = 3 (thesis eq. 14, per deformed
+//         length) for `exact_deformed`, T1 and T2
 //   A_e = pi D_e^2 / 4 (D_e the hydrodynamic diameter of the Morison entry),
 //   A_i = pi D_i^2 / 4 (D_i the contents diameter), A and I those of the section.
 // Tensions. The elastic axial force of the element is N = EA eps r' (the variation of
@@ -19,7 +21,7 @@
 // with p_e = rho_w g max(0, -z) the hydrostatic pressure below the mean surface z = 0 and
 // p_i = rho_i g (z_top - z) the pressure of a contents column whose free surface is at
 // the beam's highest node. A beam in air without contents has T_wall = T_eff.
-// Bending: M = EI r' x r'' / |r'|^3, the moment vector EI kappa b (b the binormal); the
+// Bending: M = EI r' x r'' / |r'|^n, the moment vector EI kappa b (b the binormal); the
 // resultant |M| = EI kappa and its three components in global axes are given (for a
 // vertical riser M_x and M_y are the moments of bending in the y-z and x-z planes).
 // Stresses at the outer fibre r_o = D_o/2 of a pipe section (outer/inner diameter):
