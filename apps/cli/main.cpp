@@ -501,6 +501,7 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
   clear_results(model, dir);
   const State state =
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
+  cli::clear_mode_shapes(dir);
   const ModalResult modes = solve_modes(*model.system, state, count);
   std::FILE* out = std::fopen((dir / "modes.csv").c_str(), "w");
   if (!out) throw InputError({Diagnostic{(dir / "modes.csv").string(), 0, 0, "", "cannot write"}});

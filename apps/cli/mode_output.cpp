@@ -29,6 +29,22 @@ std::vector<Index> position_coordinates(const io::Model& model) {
   return out;
 }
 
+void clear_mode_shapes(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> stale;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    const bool animation = name.starts_with("mode") && name.ends_with(".pvd") && name.size() > 8 &&
+                           name.find_first_not_of("0123456789", 4) == name.size() - 4;
+    if (animation) stale.push_back(entry.path());
+  }
+  for (const auto& p : stale) {
+    std::filesystem::remove(p, ec);
+    std::filesystem::remove_all(dir / "vtk" / p.stem(), ec);
+  }
+  std::filesystem::remove(dir / "mode_shapes.csv", ec);
+}
+
 void write_mode_shapes(const io::Model& model, const State& state, const ModalResult& modes,
                        const std::filesystem::path& dir, bool vtk) {
   const System& sys = *model.system;

@@ -21,6 +21,9 @@ inline constexpr int kModeFrames = 24;
 void write_mode_shapes(const io::Model& model, const State& state, const ModalResult& modes,
                        const std::filesystem::path& dir, bool vtk);
 
+/// Removes what an earlier `modes` left in dir: mode_shapes.csv, mode<k>.pvd, vtk/mode<k>/.
+void clear_mode_shapes(const std::filesystem::path& dir);
+
 /// The positions of the model's nodes and bodies in q (indices of x; y and z follow).
 std::vector<Index> position_coordinates(const io::Model& model);
 
