@@ -96,7 +96,7 @@ int cmd_stats(const std::string& dir, const std::vector<std::string>& patterns) 
         r[0], num(r[3]), num(r[4]), num(r[5]), num(r[6]), num(r[7]), num(r[8]), num(r[10]), r[11],
         extreme("rayleigh"), extreme("weibull"), extreme("gumbel"));
   }
-  if (stats.size() > 1)
+  if (stats.size() > 1 && stats[1].size() >= 3)
     fmt::print(
         "{} rows over {} s from statistics.start; Tz the mean up-crossing period; MPM the most "
         "probable maximum in the storm of extremes.csv; units those of each channel\n",
