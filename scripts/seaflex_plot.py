@@ -16,6 +16,8 @@ DIR/plots/:
   range_<beam>.png      range graphs from <beam>.envelope.csv: min, max and mean over the
                         run of effective tension, bending moment, von Mises stress and the
                         horizontal position, against arc length
+  statistics.png, range_sigma_<beam>.png   with a statistics section: see
+                        plot_statistics.py
 With channels (names, or shell patterns such as 'platform.*'), one figure per channel,
 <channel>.png. Uses Debian's python3-matplotlib (Agg backend, no display needed).
 Exit codes: 0 done, 2 bad input (no such directory, file or channel).
@@ -26,6 +28,9 @@ import fnmatch
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_statistics  # noqa: E402  (the statistics figures, issue 19)
 
 try:
     import matplotlib
@@ -267,6 +272,7 @@ def main(argv):
     else:
         report(header, cols, out, max(2, args.snapshots), written)
         plot_ranges(args.dir, out, written)
+        plot_statistics.plot_all(args.dir, out, written, plt, save)
     for w in written:
         print("wrote %s" % w)
     return 0

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <numbers>
 
+#include "mode_output.hpp"
 #include "option_checks.hpp"
 #include "plot_command.hpp"
 #include "progress_line.hpp"
@@ -24,10 +25,14 @@
 #include "seaflex/io/hdf5_recorder.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/output_selection.hpp"
+#include "seaflex/io/plate_csv_recorder.hpp"
+#include "seaflex/io/statistics_recorder.hpp"
 #include "seaflex/io/vtk_recorder.hpp"
+#include "seaflex/post/mode_shapes.hpp"
 #include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/modal.hpp"
 #include "seaflex/solvers/statics.hpp"
+#include "stats_command.hpp"
 
 namespace fs = std::filesystem;
 using namespace seaflex;
@@ -72,12 +77,20 @@ class Outputs {
       if (per_row || envelope)
         beams_csv_ = std::make_unique<io::BeamCsvRecorder>(dir, prefix, beam_results(), per_row,
                                                            envelope, resume);
+      if (per_row && !io::output_plates(model).empty())  // plate section results per node
+        plates_csv_ =
+            std::make_unique<io::PlateCsvRecorder>(dir, prefix, io::output_plates(model), resume);
     }
     if (h5) {
       h5_ = std::make_unique<io::Hdf5Recorder>(dir / fmt::format("{}.h5", stem), beam_results(),
                                                per_row, envelope);
       files_.push_back(dir / fmt::format("{}.h5", stem));
     }
+    if (model.statistics && envelopes && model.dynamics)  // a run's statistics (timeseries)
+      stats_ =
+          std::make_unique<io::StatisticsRecorder>(dir, *model.statistics, model.dynamics->duration,
+                                                   model.dynamics->output_interval, beam_results());
+    if (stats_ && h5_) h5_->set_statistics([s = stats_.get()] { return s->table(); });
     if (out.vtk)
       vtk_ =
           std::make_unique<io::VtkRecorder>(dir, stem, beam_results(), io::output_plates(model),
@@ -134,7 +147,8 @@ class Outputs {
     std::vector<Recorder*> list;
     for (Recorder* r :
          {static_cast<Recorder*>(csv_.get()), static_cast<Recorder*>(beams_csv_.get()),
-          static_cast<Recorder*>(h5_.get()), static_cast<Recorder*>(vtk_.get())})
+          static_cast<Recorder*>(h5_.get()), static_cast<Recorder*>(vtk_.get()),
+          static_cast<Recorder*>(stats_.get()), static_cast<Recorder*>(plates_csv_.get())})
       if (r) list.push_back(r);
     return list;
   }
@@ -142,6 +156,8 @@ class Outputs {
   std::unique_ptr<io::BeamCsvRecorder> beams_csv_;
   std::unique_ptr<io::Hdf5Recorder> h5_;
   std::unique_ptr<io::VtkRecorder> vtk_;
+  std::unique_ptr<io::StatisticsRecorder> stats_;
+  std::unique_ptr<io::PlateCsvRecorder> plates_csv_;
   std::vector<fs::path> files_;
 };
 
@@ -149,14 +165,19 @@ class Outputs {
 // is there afterwards, failed or not, comes from this command only.
 void clear_results(const io::Model& model, const fs::path& dir) {
   std::vector<fs::path> files;
-  for (const char* f : {"statics.csv", "statics_partial.csv", "timeseries.csv", "modes.csv",
-                        "statics.h5", "statics_partial.h5", "timeseries.h5", "checkpoint.txt"})
+  for (const char* f :
+       {"statics.csv", "statics_partial.csv", "timeseries.csv", "modes.csv", "mode_shapes.csv",
+        "statics.h5", "statics_partial.h5", "timeseries.h5", "checkpoint.txt"})
     files.push_back(dir / f);
   std::vector<const AncfBeam*> beams;
   for (const auto& b : model.system->bodies())
     if (const auto* beam = dynamic_cast<const AncfBeam*>(b.get())) beams.push_back(beam);
   for (const char* prefix : {"", "statics.", "statics_partial."})
     for (const auto& f : io::BeamCsvRecorder::files(dir, prefix, beams)) files.push_back(f);
+  for (const char* prefix : {"", "statics.", "statics_partial."})
+    for (const auto& f : io::PlateCsvRecorder::files(dir, prefix, io::output_plates(model)))
+      files.push_back(f);
+  for (const auto& f : io::StatisticsRecorder::files(dir, beams)) files.push_back(f);
   std::error_code ec;
   for (const auto& f : files) fs::remove(f, ec);
   for (const char* stem : {"statics", "statics_partial", "timeseries"}) {
@@ -465,25 +486,36 @@ int cmd_resume(const fs::path& dir, bool quiet) {
 }
 
 int cmd_modes(const std::string& file, const fs::path& dir, int count, bool about_initial,
-              bool quiet) {
+              bool quiet, bool vtk) {
   const io::Model model = load_model(file);
   make_output_dir(dir);
   clear_results(model, dir);
   const State state =
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
+  cli::clear_mode_shapes(dir);
   const ModalResult modes = solve_modes(*model.system, state, count);
   std::FILE* out = std::fopen((dir / "modes.csv").c_str(), "w");
   if (!out) throw InputError({Diagnostic{(dir / "modes.csv").string(), 0, 0, "", "cannot write"}});
-  std::fprintf(out, "mode,frequency_hz,period_s,omega_rad_s\n");
-  if (!quiet) fmt::print("{:>5} {:>14} {:>14}\n", "mode", "frequency (Hz)", "period (s)");
+  std::fprintf(out, "mode,frequency_hz,period_s,omega_rad_s,dominant_coordinate,energy_share\n");
+  if (!quiet)
+    fmt::print("{:>5} {:>14} {:>14}  {}\n", "mode", "frequency (Hz)", "period (s)",
+               "dominant coordinate (share of kinetic energy)");
   for (Index k = 0; k < modes.omega.size(); ++k) {
     const double f = modes.frequency_hz[k];
     const double T = f > 0 ? 1.0 / f : INFINITY;
-    std::fprintf(out, "%ld,%.17g,%.17g,%.17g\n", static_cast<long>(k + 1), f, T, modes.omega[k]);
-    if (!quiet) fmt::print("{:>5} {:>14.6g} {:>14.6g}\n", k + 1, f, T);
+    const auto dom = post::dominant_coordinate(modes.shapes.col(k), modes.mass_shapes.col(k));
+    const std::string name = model.system->coordinate_name(dom.index);
+    std::fprintf(out, "%ld,%.17g,%.17g,%.17g,%s,%.6g\n", static_cast<long>(k + 1), f, T,
+                 modes.omega[k], name.c_str(), dom.share);
+    if (!quiet)
+      fmt::print("{:>5} {:>14.6g} {:>14.6g}  {} ({:.0f} %)\n", k + 1, f, T, name, 100 * dom.share);
   }
   std::fclose(out);
-  if (!quiet) fmt::print("wrote {}\n", (dir / "modes.csv").string());
+  cli::write_mode_shapes(model, state, modes, dir, vtk);
+  if (!quiet)
+    fmt::print("wrote {} and {}{}\n", (dir / "modes.csv").string(),
+               (dir / "mode_shapes.csv").string(),
+               vtk ? fmt::format(" and {}", (dir / "mode<k>.pvd").string()) : "");
   return 0;
 }
 
@@ -598,6 +630,8 @@ int main(int argc, char** argv) {
   modes->add_flag("--about-initial", about_initial,
                   "linearize about the initial state instead of statics");
   modes->add_flag("-q,--quiet", quiet, "print only errors and warnings");
+  modes->add_flag("--vtk", output_options.vtk,
+                  "also write a ParaView animation of each mode (DIR/mode<k>.pvd, DIR/vtk/)");
   add_threads(modes);
 
   double bench_duration = 0.0;
@@ -626,6 +660,13 @@ int main(int argc, char** argv) {
                    "channels to plot (names or shell patterns); none: the standard report");
   plot->add_option("--out", plot_out, "directory for the PNG files (default DIR/plots)");
 
+  std::vector<std::string> stats_channels;
+  auto* stats =
+      app.add_subcommand("stats", "statistics and extremes of a run (DIR/statistics.csv)");
+  stats->add_option("DIR", plot_dir, "output directory of seaflex run")->required();
+  stats->add_option("CHANNEL", stats_channels,
+                    "channels (names or shell patterns); none: all but beam stations");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -645,9 +686,10 @@ int main(int argc, char** argv) {
     if (*statics) return cmd_statics(file, dir, quiet, output_options);
     if (*run) return cmd_run(file, dir, quiet, output_options, checkpoint_every);
     if (*resume) return cmd_resume(resume_dir, quiet);
-    if (*modes) return cmd_modes(file, dir, count, about_initial, quiet);
+    if (*modes) return cmd_modes(file, dir, count, about_initial, quiet, output_options.vtk);
     if (*bench) return cmd_bench(file, bench_duration);
     if (*plot) return cli::cmd_plot(plot_dir, plot_channels, plot_out);
+    if (*stats) return cli::cmd_stats(plot_dir, stats_channels);
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitInput;

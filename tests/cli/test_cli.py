@@ -174,8 +174,11 @@ class Cli(TempDirCase):
         out = os.path.join(self.dir, "out")
         r = run("modes", path, "-o", out, "-n", "4")
         self.assertEqual(r.returncode, 0, r.stderr)
-        header, rows = read_csv(os.path.join(out, "modes.csv"))
-        self.assertEqual(header, ["mode", "frequency_hz", "period_s", "omega_rad_s"])
+        with open(os.path.join(out, "modes.csv"), newline="") as f:
+            header, *rows = list(csv.reader(f))
+        rows = [[float(x) for x in r[:4]] for r in rows]
+        self.assertEqual(header, ["mode", "frequency_hz", "period_s", "omega_rad_s",
+                                  "dominant_coordinate", "energy_share"])
         self.assertEqual(len(rows), 4)
         # Euler-Bernoulli: 1.8751^2 sqrt(EI / (rho A L^4)) / 2 pi = 0.83535 Hz, twice (y and z)
         self.assertAlmostEqual(rows[0][1], 0.83535, delta=1e-4)

@@ -230,11 +230,8 @@ statics: {load_steps: 4}
         # (rounded to 0.01 s in the line)
         self.assertAlmostEqual(float(resumed.group(2)), earlier + float(resumed.group(3)), delta=0.011)
 
-    # the lead removes this decorator when integrators/generalized_alpha.cpp prints the
-    # messages below (issue 16); until then the first case fails as expected
     def test_generalized_alpha_newton_failure_messages(self):
-        # EXPECTED MESSAGES FOR THE LEAD (integrators/generalized_alpha.cpp is being
-        # rewritten there; this test states what the rewrite must print). A Newton failure
+        # A Newton failure
         # never reports "last update 0 m", and its advice matches the cause.
         #
         # 1. Newton limited to one iteration on a nonlinear model (a pendulum swinging

@@ -206,6 +206,8 @@ struct Hdf5Recorder::Impl {
     std::vector<Series> quantities;  // per output row (empty unless per_row)
     bool envelope_written = false;
   };
+  std::function<Hdf5Recorder::Table()> statistics;
+  bool statistics_written = false;
   std::vector<post::BeamResults> pending;  // until begin()
   std::vector<Beam> beams;
   bool per_row = true, envelope = true;
@@ -322,7 +324,22 @@ void Hdf5Recorder::flush() {
       b.envelope_written = true;
     }
   }
+  if (m.statistics) {
+    const Table t = m.statistics();
+    const hid_t root = m.file.get();
+    if (m.statistics_written) H5Ldelete(root, "statistics", H5P_DEFAULT);
+    Handle g = m.group(root, "statistics");
+    m.string_array(g.get(), "channel", t.rows);
+    for (std::size_t c = 0; c < t.columns.size(); ++c)
+      m.array(g.get(), t.columns[c], {static_cast<hsize_t>(t.values.rows())},
+              t.values.col(static_cast<Index>(c)).data(), nullptr);
+    m.statistics_written = true;
+  }
   m.check_status(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
+}
+
+void Hdf5Recorder::set_statistics(std::function<Table()> source) {
+  impl_->statistics = std::move(source);
 }
 
 }  // namespace seaflex::io

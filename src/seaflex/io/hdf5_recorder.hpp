@@ -8,7 +8,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "seaflex/post/beam_results.hpp"
@@ -30,6 +32,15 @@ class Hdf5Recorder : public Recorder {
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
   void flush() override;
+
+  /// A table of named rows and columns (statistics of a run).
+  struct Table {
+    std::vector<std::string> rows, columns;
+    MatX values;  ///< rows x columns
+  };
+  /// At every flush, writes source() into the group /statistics: the string dataset
+  /// `channel` (the rows) and one dataset per column.
+  void set_statistics(std::function<Table()> source);
 
  private:
   struct Impl;

@@ -136,6 +136,8 @@ void load_dynamics(const YAML::Node& node, LoadContext& ctx);
 /// reports channel patterns that match no channel
 void load_output(const YAML::Node& node, LoadContext& ctx);
 void check_output(LoadContext& ctx);
+/// the statistics section (load_statistics.cpp), after the dynamics section
+void load_statistics(const YAML::Node& node, LoadContext& ctx);
 
 /// keys of a registry, for messages
 template <class Map>

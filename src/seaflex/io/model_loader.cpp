@@ -219,6 +219,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   if (const YAML::Node n = top.get("statics"); n.IsDefined()) load_statics(n, ctx);
   if (const YAML::Node n = top.get("dynamics"); n.IsDefined()) load_dynamics(n, ctx);
   if (const YAML::Node n = top.get("output"); n.IsDefined()) load_output(n, ctx);
+  if (const YAML::Node n = top.get("statistics"); n.IsDefined()) load_statistics(n, ctx);
   top.finish();
   diag.throw_if_any();
   model.system->finalize();

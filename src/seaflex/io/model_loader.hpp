@@ -61,6 +61,16 @@ struct OutputSettings {
   bool body_angular_velocity = false;
 };
 
+/// The model's `statistics` section (docs/model-format.md): statistics, extremes and
+/// range graphs of a run (post/statistics.hpp, post/extremes.hpp).
+struct StatisticsSettings {
+  double start = 0.0;                   ///< s; rows before it (the build-up) are left out
+  double storm_duration = 0.0;          ///< s; 0: the analysed duration
+  double exceedance_probability = 0.1;  ///< of the storm maximum, for the extremes
+  int blocks = 10;                      ///< blocks of the Gumbel fit of block maxima
+  double k = 3.0;                       ///< range graphs: mean +- k sigma
+};
+
 struct Model {
   std::string file;
   std::string title;
@@ -75,6 +85,8 @@ struct Model {
   StaticsSettings statics;
   std::optional<DynamicsSettings> dynamics;
   OutputSettings output;
+  /// Statistics of a run; none without a statistics section.
+  std::optional<StatisticsSettings> statistics;
 };
 
 /// The system's channels followed by the model's own (wave elevation probes), then the

@@ -11,6 +11,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "seaflex/post/plate_results.hpp"
+
 namespace seaflex::io {
 
 namespace {
@@ -178,6 +180,14 @@ void VtkRecorder::record(const State& state, std::span<const double>) {
       for (int j = 0; j < plate->ny(); ++j)
         p.polys.push_back({plate->node_number(i, j), plate->node_number(i + 1, j),
                            plate->node_number(i + 1, j + 1), plate->node_number(i, j + 1)});
+    // section moments, membrane forces and surface stresses (points in node order)
+    post::compute_plate_results(*plate, state, table_);
+    for (int q = 0; q < post::kPlateQuantityCount; ++q) {
+      const auto c = table_.col(q);
+      p.point_data.emplace_back(
+          std::string(post::plate_quantities()[static_cast<std::size_t>(q)].name),
+          std::vector<double>(c.data(), c.data() + c.size()));
+    }
     render(p, text_);
     write_piece(plate->name(), text_);
   }

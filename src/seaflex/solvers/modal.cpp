@@ -46,6 +46,7 @@ ModalResult solve_modes(const Dae& dae, const State& state, int count) {
   result.omega = solver.eigenvalues().head(k).cwiseMax(0.0).cwiseSqrt();
   result.frequency_hz = result.omega / (2.0 * std::numbers::pi);
   result.shapes = Z * solver.eigenvectors().leftCols(k);
+  result.mass_shapes = M * result.shapes;
   return result;
 }
 

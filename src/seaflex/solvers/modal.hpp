@@ -13,6 +13,7 @@ struct ModalResult {
   VecX omega;         ///< natural circular frequencies (rad/s), ascending
   VecX frequency_hz;  ///< omega / (2 pi)
   MatX shapes;        ///< mode shapes in the full coordinates, one column per mode, M-normalized
+  MatX mass_shapes;   ///< M * shapes (kinetic energy shares: post/mode_shapes.hpp)
 };
 
 /// The lowest `count` modes (all when count <= 0 or too large).
