@@ -19,6 +19,7 @@
 #include "seaflex/core/parallel.hpp"
 #include "seaflex/io/beam_csv_recorder.hpp"
 #include "seaflex/io/csv_recorder.hpp"
+#include "seaflex/io/design_recorders.hpp"
 #include "seaflex/io/hdf5_recorder.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/output_selection.hpp"
@@ -108,6 +109,7 @@ class Outputs {
                                                per_row, envelope);
       files_.push_back(dir / fmt::format("{}.h5", stem));
     }
+    design_ = std::make_unique<io::DesignRecorders>(model, dir, prefix, stem == "timeseries");
     if (out.vtk)
       vtk_ =
           std::make_unique<io::VtkRecorder>(dir, stem, beam_results(), io::output_plates(model),
@@ -151,6 +153,8 @@ class Outputs {
     for (std::size_t k = 0; k < list.size(); ++k)
       list[k]->restore(in, fmt::format("recorder{}", k));
   }
+  /// Fatigue life and code-check utilisation lines for the end of a run.
+  std::string design_summary() const { return design_->summary(); }
   /// The files of the channels, for messages.
   std::string names() const {
     std::string list;
@@ -166,12 +170,14 @@ class Outputs {
          {static_cast<Recorder*>(csv_.get()), static_cast<Recorder*>(beams_csv_.get()),
           static_cast<Recorder*>(h5_.get()), static_cast<Recorder*>(vtk_.get())})
       if (r) list.push_back(r);
+    for (Recorder* r : design_->recorders()) list.push_back(r);
     return list;
   }
   std::unique_ptr<io::CsvRecorder> csv_;
   std::unique_ptr<io::BeamCsvRecorder> beams_csv_;
   std::unique_ptr<io::Hdf5Recorder> h5_;
   std::unique_ptr<io::VtkRecorder> vtk_;
+  std::unique_ptr<io::DesignRecorders> design_;  // fatigue and code checks
   std::vector<fs::path> files_;
 };
 
@@ -188,6 +194,7 @@ void clear_results(const io::Model& model, const fs::path& dir) {
   for (const char* prefix : {"", "statics.", "statics_partial."})
     for (const auto& f : io::BeamCsvRecorder::files(dir, prefix, beams)) files.push_back(f);
   std::error_code ec;
+  for (const auto& f : io::DesignRecorders::files(model, dir)) files.push_back(f);
   for (const auto& f : files) fs::remove(f, ec);
   for (const char* stem : {"statics", "statics_partial", "timeseries"}) {
     fs::remove(dir / fmt::format("{}.pvd", stem), ec);
@@ -280,6 +287,7 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   }
   Outputs outputs(model, dir, "statics", false);
   outputs.write_row(io::output_channels(model), state);
+  fmt::print("{}", outputs.design_summary());
   return state;
 }
 
@@ -331,6 +339,10 @@ void check_checkpointable(const io::Model& model, const std::string& file) {
                                    fmt::format("restart files do not hold the memory of '{}' "
                                                "(radiation) yet; run without checkpoints",
                                                f->name())}});
+  if (model.fatigue)
+    throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
+                                 "restart files do not hold the rainflow counters of the fatigue "
+                                 "section yet; run without checkpoints"}});
   if (model.output.format != io::OutputFormat::kCsv || model.output.vtk)
     throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
                                  "restart files continue CSV results only; use --format csv "
@@ -386,6 +398,7 @@ int simulate(Simulation& sim, State& state, const io::Model& model, const fs::pa
           rep.steps, d.time_step, rep.end_time, progress.elapsed(), thread_note, rep.rows,
           rep.max_constraint_violation);
     fmt::print("wrote {}\n", Outputs::describe(model, dir, "timeseries"));
+    fmt::print("{}", outputs.design_summary());
   } catch (const SolverError&) {
     progress.done();
     std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", outputs.names().c_str());

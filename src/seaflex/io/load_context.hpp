@@ -136,6 +136,9 @@ void load_dynamics(const YAML::Node& node, LoadContext& ctx);
 /// reports channel patterns that match no channel
 void load_output(const YAML::Node& node, LoadContext& ctx);
 void check_output(LoadContext& ctx);
+/// the fatigue and code_check sections (load_design.cpp)
+void load_fatigue(const YAML::Node& node, LoadContext& ctx);
+void load_code_check(const YAML::Node& node, LoadContext& ctx);
 
 /// keys of a registry, for messages
 template <class Map>
