@@ -12,6 +12,7 @@
 #include <iterator>
 #include <numbers>
 
+#include "fatigue_command.hpp"
 #include "plot_command.hpp"
 #include "seaflex/core/checkpoint.hpp"
 #include "seaflex/core/errors.hpp"
@@ -642,6 +643,14 @@ int main(int argc, char** argv) {
                    "channels to plot (names or shell patterns); none: the standard report");
   plot->add_option("--out", plot_out, "directory for the PNG files (default DIR/plots)");
 
+  std::string scatter_file;
+  auto* fatigue = app.add_subcommand(
+      "fatigue",
+      "combine the fatigue damage of load cases (a scatter diagram) into damage per "
+      "year and life; writes DIR/<beam>.fatigue_total.csv");
+  fatigue->add_option("SCATTER", scatter_file, "scatter diagram (YAML)")->required();
+  fatigue->add_option("-o,--output", dir, "output directory")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -658,6 +667,10 @@ int main(int argc, char** argv) {
     if (*modes) return cmd_modes(file, dir, count, about_initial, quiet);
     if (*bench) return cmd_bench(file, bench_duration);
     if (*plot) return cli::cmd_plot(plot_dir, plot_channels, plot_out);
+    if (*fatigue)
+      return cli::cmd_fatigue(scatter_file, dir, [](const std::string& m, const std::string& o) {
+        return cmd_run(m, o, true, {}, 0.0);
+      });
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitInput;

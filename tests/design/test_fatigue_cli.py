@@ -254,5 +254,70 @@ class CodeCheckCantilever(TempDirCase):
         self.assertLess(abs(api - F / A / (1.2 * 2 / 3 * self.fy)), 1e-6 * api)
 
 
+SCATTER = """
+normalise: {normalise}
+cases:
+  - {{name: a, result: A, probability: {pa}, hs: 6.0, tp: 9.0, heading: 0}}
+  - {{name: b, model: riser_b.yaml, probability: 0.75, hs: 3.0, tp: 9.0, heading: 0}}
+"""
+
+
+class ScatterDiagram(TempDirCase):
+    """seaflex fatigue: the damage per year of every point is sum_i p_i D_i / T_i * 1 year
+    (here recomputed from the cases' riser.fatigue.csv), the life its inverse."""
+
+    def setUp(self):
+        super().setUp()
+        short = RISER.replace("duration: 60", "duration: 30").replace("  write_stresses: true\n", "")
+        self.model(short, "riser_a.yaml")
+        self.model(short.replace("height: 6.0", "height: 3.0"), "riser_b.yaml")
+        r = run("run", os.path.join(self.dir, "riser_a.yaml"), "-o", os.path.join(self.dir, "A"), "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+
+    def expected(self, folders, probabilities):
+        total = 0.0
+        for folder, p in zip(folders, probabilities):
+            f = read_csv(os.path.join(folder, "riser.fatigue.csv"))
+            d = np.stack([f["damage_p%d" % j] for j in range(8)], axis=1)
+            total = total + p * d * YEAR / f["exposure_s"][:, None]
+        return total
+
+    def test_combined_damage(self):
+        path = self.model(SCATTER.format(normalise="false", pa=0.25), "scatter.yaml")
+        out = os.path.join(self.dir, "total")
+        r = run("fatigue", path, "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("shortest life", r.stdout)
+        tot = read_csv(os.path.join(out, "riser.fatigue_total.csv"))
+        d = self.expected([os.path.join(self.dir, "A"), os.path.join(out, "b")], [0.25, 0.75])
+        worst = d.max(axis=1)
+        self.assertTrue(np.all(worst > 0))
+        np.testing.assert_allclose(tot["damage_per_year"], worst, rtol=1e-12)
+        np.testing.assert_allclose(tot["life_years"], 1 / worst, rtol=1e-12)
+        np.testing.assert_array_equal(tot["worst_point"], d.argmax(axis=1))
+        with open(os.path.join(out, "fatigue_cases.csv")) as f:
+            cases = f.read().splitlines()
+        self.assertEqual(cases[0], "name,hs,tp,heading,probability,folder")
+        self.assertTrue(cases[1].startswith("a,6,9,0,0.25,"))
+
+    def test_probabilities_must_sum_to_one(self):
+        path = self.model(SCATTER.format(normalise="false", pa=0.2), "scatter.yaml")
+        out = os.path.join(self.dir, "total")
+        r = run("fatigue", path, "-o", out)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("scatter.yaml:4:3: cases: the probabilities sum to 0.95, not 1: correct them, "
+                      "or give normalise: true to scale them to 1", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(out, "riser.fatigue_total.csv")))
+        # normalise: true scales them by 1/0.95, with a warning
+        path = self.model(SCATTER.format(normalise="true", pa=0.2), "scatter.yaml")
+        r = run("fatigue", path, "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("the probabilities sum to 0.95; normalised to 1", r.stderr)
+        tot = read_csv(os.path.join(out, "riser.fatigue_total.csv"))
+        d = self.expected([os.path.join(self.dir, "A"), os.path.join(out, "b")],
+                          [0.2 / 0.95, 0.75 / 0.95])
+        np.testing.assert_allclose(tot["damage_per_year"], d.max(axis=1), rtol=1e-12)
+
+
 if __name__ == "__main__":
     unittest.main(argv=[sys.argv[0]], verbosity=2)

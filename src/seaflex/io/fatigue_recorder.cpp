@@ -126,7 +126,7 @@ void FatigueRecorder::flush() {
     post::FatigueDamage done = b.damage;  // the residue counted on a copy: the run goes on
     done.finish();
     std::FILE* f = open_or_throw(b.path);
-    line_ = "station,s,worst_point,worst_angle_deg,damage,damage_per_year,life_years";
+    line_ = "station,s,worst_point,worst_angle_deg,damage,damage_per_year,life_years,exposure_s";
     for (int j = 0; j < points; ++j) fmt::format_to(std::back_inserter(line_), ",damage_p{}", j);
     line_ += '\n';
     const auto& stations = b.results.stations();
@@ -139,8 +139,9 @@ void FatigueRecorder::flush() {
       const double d = done.damage(static_cast<int>(i) * points + worst);
       const double per_year = exposure > 0.0 ? d * kYear / exposure : 0.0;
       const double life = per_year > 0.0 ? 1.0 / per_year : INFINITY;
-      fmt::format_to(std::back_inserter(line_), "{},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g}", i,
-                     stations[i].s, worst, 360.0 * worst / points, d, per_year, life);
+      fmt::format_to(std::back_inserter(line_),
+                     "{},{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", i, stations[i].s,
+                     worst, 360.0 * worst / points, d, per_year, life, exposure);
       for (int j = 0; j < points; ++j)
         fmt::format_to(std::back_inserter(line_), ",{:.17g}",
                        done.damage(static_cast<int>(i) * points + j));
