@@ -16,7 +16,11 @@ void pipe_fibre_stresses(double tension_wall, const Vec3& moment, const Vec3& t,
                          double area, double second_moment, double outer_radius,
                          std::span<double> out) {
   const Vec3 tu = t.normalized();
-  const Vec3 e1 = (ref - ref.dot(tu) * tu).normalized();
+  Vec3 e1 = ref - ref.dot(tu) * tu;
+  // a line that turned onto its reference axis: the least parallel axis now (the points
+  // jump, but stay finite)
+  if (e1.norm() < 1e-6) e1 = circumference_reference(tu) - circumference_reference(tu).dot(tu) * tu;
+  e1.normalize();
   const Vec3 e2 = tu.cross(e1);
   const Vec3 g = tu.cross(moment) * (outer_radius / second_moment);  // stress gradient
   const double s_axial = tension_wall / area;

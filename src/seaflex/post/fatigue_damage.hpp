@@ -34,7 +34,7 @@ Vec3 circumference_reference(const Vec3& t);
 
 /// The nominal axial stress (Pa) at `points` equally spaced points of the outer fibre,
 /// theta_j = 2 pi j / points from e1 = the projection of ref on the plane normal to t.
-/// t need not be unit length; ref must not be parallel to t. out.size() == points.
+/// t need not be unit length; when ref is parallel to t, circumference_reference(t) is used.
 void pipe_fibre_stresses(double tension_wall, const Vec3& moment, const Vec3& t, const Vec3& ref,
                          double area, double second_moment, double outer_radius,
                          std::span<double> out);
