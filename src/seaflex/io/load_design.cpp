@@ -117,6 +117,11 @@ void load_fatigue(const YAML::Node& node, LoadContext& ctx) {
   f.start = r.number("start", Need::kOptional, NumberRule::nonnegative("s")).value_or(0.0);
   f.exposure = r.number("exposure", Need::kOptional, NumberRule::positive("s")).value_or(0.0);
   if (r.has("write_stresses")) f.write_stresses = read_bool(r, "write_stresses").value_or(false);
+  if (ctx.model.dynamics && ctx.model.dynamics->duration > 0.0 &&
+      f.start >= ctx.model.dynamics->duration)
+    r.error("start", fmt::format("{:g} s is not before the end of the run (dynamics.duration "
+                                 "{:g} s): no output row would be counted",
+                                 f.start, ctx.model.dynamics->duration));
   r.finish();
   if (!curve) return;
   f.curve = *curve;
@@ -147,6 +152,11 @@ void load_code_check(const YAML::Node& node, LoadContext& ctx) {
   f.gamma_m = r.number("gamma_m", Need::kOptional, factor).value_or(f.gamma_m);
   c.design_factor = r.number("design_factor", Need::kOptional, factor).value_or(1.0);
   c.start = r.number("start", Need::kOptional, NumberRule::nonnegative("s")).value_or(0.0);
+  if (ctx.model.dynamics && ctx.model.dynamics->duration > 0.0 &&
+      c.start >= ctx.model.dynamics->duration)
+    r.error("start", fmt::format("{:g} s is not before the end of the run (dynamics.duration "
+                                 "{:g} s): no output row would be checked",
+                                 c.start, ctx.model.dynamics->duration));
   r.finish();
   if (!smys || !smts) return;
   c.smys = *smys;

@@ -21,8 +21,11 @@
 // with t1 = t - t_fab - t_corr (burst) and t2 = t - t_corr (the other terms), f_y = SMYS
 // and f_u = SMTS (derated by the user for temperature). u <= 1 passes. The condition
 // factor gamma_C multiplies the design load effects M_d and T_ed here (as DNV-ST-F101
-// does; 1.0 by default). The standard's equation numbers are not cited: the text was not
-// at hand when this was written; the formulas above follow the standard's section 5.4.
+// does; 1.0 by default). Where the inputs come from in DNV-OS-F201 (2010): the load
+// effect factors Table 5-2, f_y and f_u Table 5-5, t1 and t2 Sec.5 C203, the condition
+// factor Table 5-11, the ovality f_0 Sec.5 G201. The equation numbers are not cited: the
+// standard's text was not at hand; the formulas above are those of its combined-loading
+// criteria (Sec.5 D, DNV-ST-F201 (2018) section 5.4).
 // API RP 2RD section 4.2 (working stress): sigma_vm <= C_f sigma_a, sigma_a = 2/3 SMYS,
 // C_f = 1.0 operating (1.2 extreme, 1.5 survival and test): u = sigma_vm / (C_f 2/3 SMYS),
 // sigma_vm the von Mises stress of the outer fibre (post/beam_results.hpp).
