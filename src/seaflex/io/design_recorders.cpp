@@ -57,7 +57,7 @@ std::vector<std::filesystem::path> DesignRecorders::files(const Model& model,
   std::vector<std::filesystem::path> out;
   for (const auto& b : model.system->bodies()) {
     if (!dynamic_cast<const AncfBeam*>(b.get())) continue;
-    for (const char* prefix : {"", "statics."}) {
+    for (const char* prefix : {"", "statics.", "statics_partial."}) {
       for (const auto& f : FatigueRecorder::files(dir, prefix, b->name())) out.push_back(f);
       out.push_back(CodeCheckRecorder::file(dir, prefix, b->name()));
     }
