@@ -18,6 +18,9 @@ DIR/plots/:
                         horizontal position, against arc length
   statistics.png, range_sigma_<beam>.png   with a statistics section: see
                         plot_statistics.py
+  fatigue_<beam>.png, code_check_<beam>.png: fatigue damage and life, and the code-check
+                        utilisation along each beam (scripts/plot_design.py); a seaflex
+                        fatigue directory gets fatigue_total_<beam>.png
 With channels (names, or shell patterns such as 'platform.*'), one figure per channel,
 <channel>.png. Uses Debian's python3-matplotlib (Agg backend, no display needed).
 Exit codes: 0 done, 2 bad input (no such directory, file or channel).
@@ -41,6 +44,8 @@ except ImportError:  # pragma: no cover - depends on the machine
     sys.stderr.write("seaflex plot: needs matplotlib (Debian: apt-get install python3-matplotlib)\n")
     sys.exit(2)
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_design  # noqa: E402  (fatigue and code-check figures)
 
 DPI = 110
 
@@ -259,6 +264,14 @@ def main(argv):
         header, cols = read_csv(path)
     elif os.path.isfile(h5):
         header, cols = read_h5(h5)
+    elif os.path.isdir(args.dir) and any(n.endswith(".fatigue_total.csv") for n in os.listdir(args.dir)):
+        out = args.out or os.path.join(args.dir, "plots")  # a seaflex fatigue directory
+        os.makedirs(out, exist_ok=True)
+        written = []
+        plot_design.plot_design(plt, save, args.dir, out, written)
+        for w in written:
+            print("wrote %s" % w)
+        return 0
     else:
         fail("%s: no timeseries.csv or timeseries.h5 here (write one with seaflex run MODEL -o %s)"
              % (args.dir, args.dir))
@@ -273,6 +286,7 @@ def main(argv):
         report(header, cols, out, max(2, args.snapshots), written)
         plot_ranges(args.dir, out, written)
         plot_statistics.plot_all(args.dir, out, written, plt, save)
+        plot_design.plot_design(plt, save, args.dir, out, written)
     for w in written:
         print("wrote %s" % w)
     return 0

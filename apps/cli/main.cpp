@@ -14,6 +14,7 @@
 
 #include "mode_output.hpp"
 #include "option_checks.hpp"
+#include "fatigue_command.hpp"
 #include "plot_command.hpp"
 #include "progress_line.hpp"
 #include "seaflex/core/checkpoint.hpp"
@@ -22,6 +23,7 @@
 #include "seaflex/core/parallel.hpp"
 #include "seaflex/io/beam_csv_recorder.hpp"
 #include "seaflex/io/csv_recorder.hpp"
+#include "seaflex/io/design_recorders.hpp"
 #include "seaflex/io/hdf5_recorder.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/output_selection.hpp"
@@ -91,6 +93,7 @@ class Outputs {
           std::make_unique<io::StatisticsRecorder>(dir, *model.statistics, model.dynamics->duration,
                                                    model.dynamics->output_interval, beam_results());
     if (stats_ && h5_) h5_->set_statistics([s = stats_.get()] { return s->table(); });
+    design_ = std::make_unique<io::DesignRecorders>(model, dir, prefix, stem == "timeseries");
     if (out.vtk)
       vtk_ =
           std::make_unique<io::VtkRecorder>(dir, stem, beam_results(), io::output_plates(model),
@@ -134,6 +137,8 @@ class Outputs {
     for (std::size_t k = 0; k < list.size(); ++k)
       list[k]->restore(in, fmt::format("recorder{}", k));
   }
+  /// Fatigue life and code-check utilisation lines for the end of a run.
+  std::string design_summary() const { return design_->summary(); }
   /// The files of the channels, for messages.
   std::string names() const {
     std::string list;
@@ -150,6 +155,7 @@ class Outputs {
           static_cast<Recorder*>(h5_.get()), static_cast<Recorder*>(vtk_.get()),
           static_cast<Recorder*>(stats_.get()), static_cast<Recorder*>(plates_csv_.get())})
       if (r) list.push_back(r);
+    for (Recorder* r : design_->recorders()) list.push_back(r);
     return list;
   }
   std::unique_ptr<io::CsvRecorder> csv_;
@@ -158,6 +164,7 @@ class Outputs {
   std::unique_ptr<io::VtkRecorder> vtk_;
   std::unique_ptr<io::StatisticsRecorder> stats_;
   std::unique_ptr<io::PlateCsvRecorder> plates_csv_;
+  std::unique_ptr<io::DesignRecorders> design_;  // fatigue and code checks
   std::vector<fs::path> files_;
 };
 
@@ -179,6 +186,7 @@ void clear_results(const io::Model& model, const fs::path& dir) {
       files.push_back(f);
   for (const auto& f : io::StatisticsRecorder::files(dir, beams)) files.push_back(f);
   std::error_code ec;
+  for (const auto& f : io::DesignRecorders::files(model, dir)) files.push_back(f);
   for (const auto& f : files) fs::remove(f, ec);
   for (const char* stem : {"statics", "statics_partial", "timeseries"}) {
     fs::remove(dir / fmt::format("{}.pvd", stem), ec);
@@ -274,6 +282,7 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   }
   Outputs outputs(model, dir, "statics", false);
   outputs.write_row(io::output_channels(model), state);
+  fmt::print("{}", outputs.design_summary());
   return state;
 }
 
@@ -325,6 +334,10 @@ void check_checkpointable(const io::Model& model, const std::string& file) {
                                    fmt::format("restart files do not hold the memory of '{}' "
                                                "(radiation) yet; run without checkpoints",
                                                f->name())}});
+  if (model.fatigue)
+    throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
+                                 "restart files do not hold the rainflow counters of the fatigue "
+                                 "section yet; run without checkpoints"}});
   if (model.output.format != io::OutputFormat::kCsv || model.output.vtk)
     throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
                                  "restart files continue CSV results only; use --format csv "
@@ -388,6 +401,7 @@ int simulate(Simulation& sim, State& state, const io::Model& model, const fs::pa
           rep.steps, d.time_step, rep.end_time, progress.elapsed(), thread_note, rep.rows,
           rep.max_constraint_violation);
     fmt::print("wrote {}\n", Outputs::describe(model, dir, "timeseries"));
+    fmt::print("{}", outputs.design_summary());
   } catch (const SolverError&) {
     progress.done();
     std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", outputs.names().c_str());
@@ -666,6 +680,13 @@ int main(int argc, char** argv) {
   stats->add_option("DIR", plot_dir, "output directory of seaflex run")->required();
   stats->add_option("CHANNEL", stats_channels,
                     "channels (names or shell patterns); none: all but beam stations");
+  std::string scatter_file;
+  auto* fatigue = app.add_subcommand(
+      "fatigue",
+      "combine the fatigue damage of load cases (a scatter diagram) into damage per "
+      "year and life; writes DIR/<beam>.fatigue_total.csv");
+  fatigue->add_option("SCATTER", scatter_file, "scatter diagram (YAML)")->required();
+  fatigue->add_option("-o,--output", dir, "output directory")->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -690,6 +711,10 @@ int main(int argc, char** argv) {
     if (*bench) return cmd_bench(file, bench_duration);
     if (*plot) return cli::cmd_plot(plot_dir, plot_channels, plot_out);
     if (*stats) return cli::cmd_stats(plot_dir, stats_channels);
+    if (*fatigue)
+      return cli::cmd_fatigue(scatter_file, dir, [](const std::string& m, const std::string& o) {
+        return cmd_run(m, o, true, {}, 0.0);
+      });
   } catch (const InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitInput;

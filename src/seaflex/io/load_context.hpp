@@ -138,6 +138,9 @@ void load_output(const YAML::Node& node, LoadContext& ctx);
 void check_output(LoadContext& ctx);
 /// the statistics section (load_statistics.cpp), after the dynamics section
 void load_statistics(const YAML::Node& node, LoadContext& ctx);
+/// the fatigue and code_check sections (load_design.cpp)
+void load_fatigue(const YAML::Node& node, LoadContext& ctx);
+void load_code_check(const YAML::Node& node, LoadContext& ctx);
 
 /// keys of a registry, for messages
 template <class Map>

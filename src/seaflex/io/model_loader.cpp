@@ -220,6 +220,8 @@ Model load(const YAML::Node& root, const std::string& name) {
   if (const YAML::Node n = top.get("dynamics"); n.IsDefined()) load_dynamics(n, ctx);
   if (const YAML::Node n = top.get("output"); n.IsDefined()) load_output(n, ctx);
   if (const YAML::Node n = top.get("statistics"); n.IsDefined()) load_statistics(n, ctx);
+  if (const YAML::Node n = top.get("fatigue"); n.IsDefined()) load_fatigue(n, ctx);
+  if (const YAML::Node n = top.get("code_check"); n.IsDefined()) load_code_check(n, ctx);
   top.finish();
   diag.throw_if_any();
   model.system->finalize();

@@ -10,6 +10,7 @@
 
 #include "seaflex/hydro/ocean.hpp"
 #include "seaflex/integrators/integrator.hpp"
+#include "seaflex/io/design_settings.hpp"
 #include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/statics.hpp"
 #include "seaflex/system/system.hpp"
@@ -87,6 +88,8 @@ struct Model {
   OutputSettings output;
   /// Statistics of a run; none without a statistics section.
   std::optional<StatisticsSettings> statistics;
+  std::optional<FatigueSettings> fatigue;       ///< the fatigue section
+  std::optional<CodeCheckSettings> code_check;  ///< the code_check section
 };
 
 /// The system's channels followed by the model's own (wave elevation probes), then the
