@@ -101,13 +101,15 @@ TEST(Motion, MovingMarkerJointTimeDerivatives) {
   RigidBodyInitial init;
   init.position = Vec3(1.0, 2.0, -3.0);
   init.orientation = math::rotation_from_roll_pitch_yaw(0.1, 0.2, 0.3);
-  auto body = std::make_unique<RigidBody>("vessel", 1000.0, Mat3(Vec3(10, 20, 30).asDiagonal()), init);
+  auto body =
+      std::make_unique<RigidBody>("vessel", 1000.0, Mat3(Vec3(10, 20, 30).asDiagonal()), init);
   const RigidBody& b = *body;
   sys.add_body(std::move(body));
   auto from = std::make_unique<MovingMarker>(busy_motion(), Vec3(0.5, 0.0, 0.0), init.position,
                                              init.orientation);
   auto to = std::make_unique<RigidBodyMarker>(b, Vec3(0.0, 0.0, 0.0));
-  sys.add_constraint(std::make_unique<Joint>("m", JointType::kFixed, std::move(from), std::move(to)));
+  sys.add_constraint(
+      std::make_unique<Joint>("m", JointType::kFixed, std::move(from), std::move(to)));
   sys.finalize();
   State s0 = sys.initial_state();
   const Index n = sys.num_coordinates();

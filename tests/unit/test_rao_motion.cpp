@@ -162,8 +162,9 @@ TEST(RaoMotion, TableErrors) {
             std::string::npos);
   EXPECT_NE(message("8, 0, 0.1, 0\n").find(":1:0: sway_amp: missing: the row has 4 of 14"),
             std::string::npos);
-  EXPECT_NE(message("8, 0" + row + "nan, 0" + row).find(":2:0: period_s: expected a finite "
-                                                        "number, got 'nan'"),
+  EXPECT_NE(message("8, 0" + row + "nan, 0" + row)
+                .find(":2:0: period_s: expected a finite "
+                      "number, got 'nan'"),
             std::string::npos);
   EXPECT_NE(message("8, 0" + row + "8, 0" + row).find("is given twice (first at line 1)"),
             std::string::npos);

@@ -76,7 +76,8 @@ TEST(PrescribedMotion, BaseExcitedOscillatorRk4AndGeneralizedAlpha) {
   const double X = Y * std::hypot(k, c * w) / std::hypot(k - m * w * w, c * w);
   const double phi = std::atan2(c * w, k) - std::atan2(c * w, k - m * w * w);
   for (const char* integrator : {"rk4", "generalized_alpha"}) {
-    const std::string text = fmt::format(R"(
+    const std::string text =
+        fmt::format(R"(
 environment: {{gravity: 0}}
 bodies:
   mass: {{type: rigid_body, mass: {m}, inertia: [10, 10, 10], position: [0, 0, 0]}}
@@ -91,14 +92,13 @@ connections:
     free_length: 10
 dynamics: {{integrator: {integrator}, time_step: 0.002, duration: 30, output_interval: 0.01}}
 )",
-                                         fmt::arg("m", m), fmt::arg("Y", Y), fmt::arg("Tb", Tb),
-                                         fmt::arg("k", k), fmt::arg("c", c),
-                                         fmt::arg("integrator", integrator));
+                    fmt::arg("m", m), fmt::arg("Y", Y), fmt::arg("Tb", Tb), fmt::arg("k", k),
+                    fmt::arg("c", c), fmt::arg("integrator", integrator));
     Run r;
     run(text, r, false);
     const auto [amp, ph] = fit(r.rec.times, r.col("mass.z"), w, 24.0);
-    EXPECT_NEAR(amp / X, 1.0, 0.005) << integrator << ": amplitude " << amp << " m, closed form "
-                                     << X << " m";
+    EXPECT_NEAR(amp / X, 1.0, 0.005)
+        << integrator << ": amplitude " << amp << " m, closed form " << X << " m";
     EXPECT_NEAR(ph, phi, 0.005) << integrator;
   }
 }
@@ -129,8 +129,8 @@ dynamics: {{integrator: {}, time_step: 0.01, duration: 10, output_interval: 0.1}
                                          integrator);
     Run r;
     run(text, r, true);
-    const char* names[] = {"vessel.x", "vessel.y", "vessel.z", "vessel.roll", "vessel.pitch",
-                           "vessel.yaw"};
+    const char* names[] = {"vessel.x",    "vessel.y",     "vessel.z",
+                           "vessel.roll", "vessel.pitch", "vessel.yaw"};
     for (int j = 0; j < 6; ++j) {
       const auto v = r.col(names[j]);
       double worst = 0.0;
@@ -176,26 +176,27 @@ dynamics: {integrator: rk4, time_step: 0.01, duration: 6, output_interval: 0.5}
   for (std::size_t i = 1; i < r.rec.times.size(); ++i) {
     const MotionPose p = compute_motion_pose(motion.sample(r.rec.times[i]));
     const Vec3 F = mass * (p.p_tt - Vec3(0, 0, -9.81));
-    const Mat3 W = p.R_t * p.R.transpose(), Wd = p.R_tt * p.R.transpose() + p.R_t * p.R_t.transpose();
+    const Mat3 W = p.R_t * p.R.transpose(),
+               Wd = p.R_tt * p.R.transpose() + p.R_t * p.R_t.transpose();
     const Vec3 w(W(2, 1), W(0, 2), W(1, 0)), wd(Wd(2, 1), Wd(0, 2), Wd(1, 0));
     const Mat3 Iw = p.R * I * p.R.transpose();
     const Vec3 M = Iw * wd + w.cross(Iw * w);
     for (int j = 0; j < 3; ++j) {
       EXPECT_NEAR(cols[j][i], F[j], 1e-6 * F.norm()) << "t = " << r.rec.times[i] << " " << names[j];
-      EXPECT_NEAR(cols[3 + j][i], M[j], 1e-6 * M.norm()) << "t = " << r.rec.times[i] << " "
-                                                           << names[3 + j];
+      EXPECT_NEAR(cols[3 + j][i], M[j], 1e-6 * M.norm())
+          << "t = " << r.rec.times[i] << " " << names[3 + j];
     }
   }
 }
 
 // A mass m hangs from a rope (EA, free length L00; attached 0.5 m above its centre of
-// gravity, so that statics has a pendulum stiffness in rotation) in static equilibrium; at t = 0 the
-// winch starts paying out at rate r, L0(t) = L00 + r t. The stretch s = L - L0 obeys
-// m s'' = m g - EA s / L0(t): s = m g L0(t) / EA + s_h with s_h'' + (c^2 / L0) s_h = 0,
-// c^2 = EA / m, whose solutions are sqrt(x) Z1(2 kappa sqrt(x)), x = L0(t), kappa = c / r
-// (Bessel functions of order 1; ds_h/dt = c Z0). From rest: s_h(0) = 0,
-// s_h'(0) = -r (1 + m g / EA). Tension T = m g + EA s_h / L0(t), within 0.5 % of its
-// largest value (the issue's tolerance; RK4 at h = 1 ms is far more accurate).
+// gravity, so that statics has a pendulum stiffness in rotation) in static equilibrium; at t = 0
+// the winch starts paying out at rate r, L0(t) = L00 + r t. The stretch s = L - L0 obeys m s'' = m
+// g - EA s / L0(t): s = m g L0(t) / EA + s_h with s_h'' + (c^2 / L0) s_h = 0, c^2 = EA / m, whose
+// solutions are sqrt(x) Z1(2 kappa sqrt(x)), x = L0(t), kappa = c / r (Bessel functions of order 1;
+// ds_h/dt = c Z0). From rest: s_h(0) = 0, s_h'(0) = -r (1 + m g / EA). Tension T = m g + EA s_h /
+// L0(t), within 0.5 % of its largest value (the issue's tolerance; RK4 at h = 1 ms is far more
+// accurate).
 TEST(PrescribedMotion, WinchPayingOutUnderAHangingMass) {
   const double m = 1000.0, g = 9.81, EA = 1.0e6, L00 = 10.0, rate = 0.5;
   const std::string text = fmt::format(R"(
@@ -229,8 +230,8 @@ dynamics: {{integrator: rk4, time_step: 0.001, duration: 10, output_interval: 0.
   for (std::size_t i = 0; i < T.size(); ++i) {
     const double t = run_.rec.times[i], x = L00 + rate * t, z = 2 * kappa * std::sqrt(x);
     EXPECT_NEAR(L0[i], x, 1e-12 * x);
-    const double sh = std::sqrt(x) * (Acoef * std::cyl_bessel_j(1.0, z) +
-                                      Bcoef * std::cyl_neumann(1.0, z));
+    const double sh =
+        std::sqrt(x) * (Acoef * std::cyl_bessel_j(1.0, z) + Bcoef * std::cyl_neumann(1.0, z));
     const double exact = m * g + EA * sh / x;
     worst = std::max(worst, std::abs(T[i] - exact));
     largest = std::max(largest, exact);

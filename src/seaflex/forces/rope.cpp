@@ -141,8 +141,8 @@ void Rope::add_channels(ChannelList& channels) const {
   channels.push_back(
       {fmt::format("{}.length", name()), [this](const State& s) { return length(s); }});
   if (winch_)
-    channels.push_back({fmt::format("{}.free_length", name()),
-                        [this](const State& s) { return free_length(s); }});
+    channels.push_back(
+        {fmt::format("{}.free_length", name()), [this](const State& s) { return free_length(s); }});
 }
 
 }  // namespace seaflex

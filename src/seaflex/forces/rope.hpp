@@ -57,7 +57,7 @@ class Rope : public Force {
   double free_length_;
   double axial_stiffness_;                // EA (N)
   double damping_;                        // N s/m on L'
-  std::optional<Winch> winch_;
+  std::optional<Winch> winch_;            // the free length follows time when set
   std::vector<Index> dofs_;               // union of all markers' coordinates
   std::vector<std::vector<Index>> cols_;  // per segment: pair column -> union column
   math::BlockId block_ = -1;

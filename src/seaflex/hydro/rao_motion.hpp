@@ -24,8 +24,8 @@ class RaoMotion : public Motion {
  public:
   /// The table is interpolated once per component here. *clamped (if given) is set to the
   /// number of components whose heading lies outside the table's headings (clamped).
-  RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& components,
-            const Vec3& origin, RaoPhaseReference reference, int* clamped = nullptr);
+  RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& components, const Vec3& origin,
+            RaoPhaseReference reference, int* clamped = nullptr);
   MotionSample sample(double t) const override;
 
   /// The complex amplitude H A of component k (x_j = Re{c_j e^{i w t}}).

@@ -20,9 +20,10 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::size_t kMaxProblems = 20;
 
-const std::vector<std::string> kPlainColumns{
-    "period_s",  "heading_deg", "surge_amp", "surge_phase", "sway_amp",  "sway_phase", "heave_amp",
-    "heave_phase", "roll_amp",  "roll_phase", "pitch_amp", "pitch_phase", "yaw_amp", "yaw_phase"};
+const std::vector<std::string> kPlainColumns{"period_s", "heading_deg", "surge_amp", "surge_phase",
+                                             "sway_amp", "sway_phase",  "heave_amp", "heave_phase",
+                                             "roll_amp", "roll_phase",  "pitch_amp", "pitch_phase",
+                                             "yaw_amp",  "yaw_phase"};
 const std::vector<std::string> kWamitColumns{"PER", "BETA", "I", "Mod", "Pha", "Re", "Im"};
 
 struct Problems {
@@ -58,8 +59,8 @@ bool parse(const std::string& token, double& out) {
 
 // rows of numbers: '#' lines, blank lines and one leading header are skipped; problems
 // name the column of `columns`; returns (line, values) of the complete rows
-std::vector<std::pair<int, std::vector<double>>> read_rows(Problems& p,
-                                                          const std::vector<std::string>& columns) {
+std::vector<std::pair<int, std::vector<double>>> read_rows(
+    Problems& p, const std::vector<std::string>& columns) {
   std::ifstream in(p.file);
   if (!in) {
     p.add(0, "file", "cannot open the RAO file");
@@ -82,8 +83,8 @@ std::vector<std::pair<int, std::vector<double>>> read_rows(Problems& p,
     first = false;
     if (fields.size() < columns.size()) {
       p.add(n, columns[fields.size()],
-            fmt::format("missing: the row has {} of {} columns ({})", fields.size(),
-                        columns.size(), fmt::join(columns, ", ")));
+            fmt::format("missing: the row has {} of {} columns ({})", fields.size(), columns.size(),
+                        fmt::join(columns, ", ")));
       continue;
     }
     std::vector<double> v(columns.size());
@@ -129,8 +130,7 @@ RaoTable assemble(Problems& p, const std::vector<Entry>& entries, bool need_all_
       p.add(e.line, "table",
             fmt::format("period {:g} s, heading {:g} deg{} is given twice (first at line {})",
                         e.period, e.heading_deg,
-                        need_all_modes ? "" : fmt::format(", mode {}", e.mode + 1),
-                        marks[e.mode]));
+                        need_all_modes ? "" : fmt::format(", mode {}", e.mode + 1), marks[e.mode]));
       continue;
     }
     marks[e.mode] = e.line;

@@ -266,8 +266,9 @@ std::unique_ptr<Body> build_rigid_body(MapReader& r, const std::string& name, Lo
     const YAML::Node type = mn["type"];
     if (type.IsScalar() && type.Scalar() == "rao" &&
         std::abs(math::roll_pitch_yaw_from_rotation(init.orientation)[2]) > 1e-12)
-      r.error("orientation", "a body driven by RAOs must not be turned in yaw: its RAO "
-                             "headings are the global wave directions");
+      r.error("orientation",
+              "a body driven by RAOs must not be turned in yaw: its RAO "
+              "headings are the global wave directions");
     if (position) {
       ctx.prescribed[name] = {*motion, r.get("motion").Mark(), *position, init.orientation};
       // the body starts on the motion at t = 0: its pose and velocities

@@ -55,7 +55,7 @@ struct LoadContext {
   struct Prescribed {
     MotionEntry motion;
     YAML::Mark mark;
-    Vec3 rest_position;     ///< the body's pose that the motion displaces
+    Vec3 rest_position;  ///< the body's pose that the motion displaces
     Mat3 rest_orientation;
   };
   std::map<std::string, Prescribed> prescribed;

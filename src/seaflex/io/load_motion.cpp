@@ -36,8 +36,9 @@ std::string resolve(const std::string& file, const LoadContext& ctx) {
 // six numbers (m, m, m, deg, deg, deg) or, when allow_scalar, one number for all six
 std::optional<Vec6> read_six(MapReader& r, std::string_view key, Need need, bool allow_scalar,
                              const std::string& unit) {
-  const YAML::Node n = r.get(key, need, "a list of six numbers (surge, sway, heave, roll, pitch, "
-                                        "yaw)");
+  const YAML::Node n = r.get(key, need,
+                             "a list of six numbers (surge, sway, heave, roll, pitch, "
+                             "yaw)");
   if (!n.IsDefined()) return std::nullopt;
   Vec6 v;
   if (allow_scalar && n.IsScalar()) {
@@ -180,12 +181,13 @@ std::shared_ptr<const Motion> read_rao_motion(MapReader& r, const Vec3& origin, 
   const auto file = r.text(key, Need::kRequired);
   if (!file) return nullptr;
   if (!ctx.model.ocean || !ctx.model.ocean->has_waves()) {
-    r.error("type", "a RAO motion is the response to the model's waves, but the model has no "
-                    "environment.waves");
+    r.error("type",
+            "a RAO motion is the response to the model's waves, but the model has no "
+            "environment.waves");
     return nullptr;
   }
-  const hydro::RaoPhase ph = phase.value_or("lead") == "lead" ? hydro::RaoPhase::kLead
-                                                              : hydro::RaoPhase::kLag;
+  const hydro::RaoPhase ph =
+      phase.value_or("lead") == "lead" ? hydro::RaoPhase::kLead : hydro::RaoPhase::kLag;
   hydro::RaoTable table;
   try {
     table = has_file ? hydro::read_rao_table(resolve(*file, ctx), ph)
@@ -225,8 +227,9 @@ std::optional<MotionEntry> read_motion(MapReader& owner, std::string_view key,
   if (!n.IsDefined()) return entry;
   if (n.IsScalar() && n.Scalar() == "free") {
     if (!allow_free) {
-      owner.error(key, "'free' applies to rigid bodies only; here give a motion mapping with a "
-                       "type (constant_velocity, harmonic, table, rao)");
+      owner.error(key,
+                  "'free' applies to rigid bodies only; here give a motion mapping with a "
+                  "type (constant_velocity, harmonic, table, rao)");
       return std::nullopt;
     }
     return entry;

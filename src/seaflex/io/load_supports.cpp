@@ -105,8 +105,8 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
       std::vector<PrescribedCoordinates::Row> rows;
       for (std::size_t j = 0; j < locals.size(); ++j) {
         const int comp = static_cast<int>(locals[j] - 6 * *k);
-        rows.push_back({locals[j], comp < 3, comp < 3 ? g.positions[*k] : g.slopes[*k], comp % 3,
-                        labels[j]});
+        rows.push_back(
+            {locals[j], comp < 3, comp < 3 ? g.positions[*k] : g.slopes[*k], comp % 3, labels[j]});
       }
       const std::string cname = fmt::format("{}.n{}.support", beam->name(), *k);
       ctx.constraint_origin[cname] = {node[i].Mark(), path};

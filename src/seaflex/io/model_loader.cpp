@@ -91,7 +91,8 @@ void check_constraints(LoadContext& ctx) {
   // initial positions and velocities, which a ramp from rest guarantees
   auto moving_hint = [](const Constraint* c) -> std::string {
     const auto* j = dynamic_cast<const Joint*>(c);
-    if (dynamic_cast<const PrescribedCoordinates*>(c) || (j && (j->from().moving() || j->to().moving())))
+    if (dynamic_cast<const PrescribedCoordinates*>(c) ||
+        (j && (j->from().moving() || j->to().moving())))
       return "; it follows an imposed motion, which must start where the model starts: give "
              "the motion a ramp (it then starts from rest at zero displacement)";
     return "";
@@ -109,7 +110,8 @@ void check_constraints(LoadContext& ctx) {
     const auto [mark, path] = origin(c);
     // a body with an imposed motion is held in all six degrees of freedom
     bool prescribed = moving_hint(c) != "";
-    for (Index r : red.depends_on) prescribed = prescribed || moving_hint(sys.constraint_at_row(r)) != "";
+    for (Index r : red.depends_on)
+      prescribed = prescribed || moving_hint(sys.constraint_at_row(r)) != "";
     ctx.diag.error(
         mark, path,
         fmt::format("'{}' over-constrains the assembly: its condition '{}' repeats what {} "
@@ -139,8 +141,7 @@ void check_constraints(LoadContext& ctx) {
     ctx.diag.error(mark, path,
                    fmt::format("'{}' is not satisfied by the initial positions: condition '{}' is "
                                "off by {:.6g}{}; place the bodies so that the joint closes{}",
-                               c->name(), label(v.row), std::abs(v.value), detail,
-                               moving_hint(c)));
+                               c->name(), label(v.row), std::abs(v.value), detail, moving_hint(c)));
   }
   for (const ViolatedRow& v : audit.velocity_violated) {
     const Constraint* c = sys.constraint_at_row(v.row);
