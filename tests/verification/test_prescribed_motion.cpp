@@ -23,7 +23,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-struct Run {
+struct Recorded {
   MemoryRecorder rec;
   std::vector<double> col(const std::string& name) const {
     const std::size_t c = rec.column(name);
@@ -34,7 +34,7 @@ struct Run {
 };
 
 // statics at t = 0 (when the model asks for it), then the dynamics, every row in memory
-void run(const std::string& text, Run& out, bool statics = true) {
+void run(const std::string& text, Recorded& out, bool statics = true) {
   io::Model m = io::load_model_text(text, "motion.yaml");
   State s = m.system->initial_state();
   if (statics) solve_statics(*m.system, s, m.statics);
@@ -94,7 +94,7 @@ dynamics: {{integrator: {integrator}, time_step: 0.002, duration: 30, output_int
 )",
                     fmt::arg("m", m), fmt::arg("Y", Y), fmt::arg("Tb", Tb), fmt::arg("k", k),
                     fmt::arg("c", c), fmt::arg("integrator", integrator));
-    Run r;
+    Recorded r;
     run(text, r, false);
     const auto [amp, ph] = fit(r.rec.times, r.col("mass.z"), w, 24.0);
     EXPECT_NEAR(amp / X, 1.0, 0.005)
@@ -127,7 +127,7 @@ bodies:
 dynamics: {{integrator: {}, time_step: 0.01, duration: 10, output_interval: 0.1}}
 )",
                                          integrator);
-    Run r;
+    Recorded r;
     run(text, r, true);
     const char* names[] = {"vessel.x",    "vessel.y",     "vessel.z",
                            "vessel.roll", "vessel.pitch", "vessel.yaw"};
@@ -167,7 +167,7 @@ bodies:
     motion: {type: harmonic, amplitude: [1.0, 0.5, 2.0, 8, -6, 12], period: [9, 7, 10, 8, 6.5, 12]}
 dynamics: {integrator: rk4, time_step: 0.01, duration: 6, output_interval: 0.5}
 )";
-  Run r;
+  Recorded r;
   run(text, r, false);
   const char* names[] = {"vessel.motion.fx", "vessel.motion.fy", "vessel.motion.fz",
                          "vessel.motion.mx", "vessel.motion.my", "vessel.motion.mz"};
@@ -189,8 +189,8 @@ dynamics: {integrator: rk4, time_step: 0.01, duration: 6, output_interval: 0.5}
   }
 }
 
-// A mass m hangs from a rope (EA, free length L00; attached 0.5 m above its centre of
-// gravity, so that statics has a pendulum stiffness in rotation) in static equilibrium; at t = 0
+// A mass m hangs from a rope (EA, free length L00, attached 0.5 m above its centre of
+// gravity) at its static equilibrium (stretch m g L00 / EA, placed so in the model); at t = 0
 // the winch starts paying out at rate r, L0(t) = L00 + r t. The stretch s = L - L0 obeys m s'' = m
 // g - EA s / L0(t): s = m g L0(t) / EA + s_h with s_h'' + (c^2 / L0) s_h = 0, c^2 = EA / m, whose
 // solutions are sqrt(x) Z1(2 kappa sqrt(x)), x = L0(t), kappa = c / r (Bessel functions of order 1;
@@ -199,10 +199,11 @@ dynamics: {integrator: rk4, time_step: 0.01, duration: 6, output_interval: 0.5}
 // accurate).
 TEST(PrescribedMotion, WinchPayingOutUnderAHangingMass) {
   const double m = 1000.0, g = 9.81, EA = 1.0e6, L00 = 10.0, rate = 0.5;
-  const std::string text = fmt::format(R"(
+  const std::string text =
+      fmt::format(R"(
 environment: {{gravity: {g}}}
 bodies:
-  load: {{type: rigid_body, mass: {m}, inertia: [10, 10, 10], position: [0, 0, -10.5]}}
+  load: {{type: rigid_body, mass: {m}, inertia: [10, 10, 10], position: [0, 0, {z0}]}}
 connections:
   - name: wire
     type: rope
@@ -210,13 +211,12 @@ connections:
     axial_stiffness: {EA}
     free_length: {L}
     winch: {{rate: {r}}}
-statics: {{load_steps: 1}}
 dynamics: {{integrator: rk4, time_step: 0.001, duration: 10, output_interval: 0.01}}
 )",
-                                       fmt::arg("g", g), fmt::arg("m", m), fmt::arg("EA", EA),
-                                       fmt::arg("L", L00), fmt::arg("r", rate));
-  Run run_;
-  run(text, run_, true);
+                  fmt::arg("z0", -(L00 + m * g * L00 / EA) - 0.5), fmt::arg("g", g),
+                  fmt::arg("m", m), fmt::arg("EA", EA), fmt::arg("L", L00), fmt::arg("r", rate));
+  Recorded run_;
+  run(text, run_, false);  // placed at its static equilibrium (the stretch m g L00 / EA)
   const auto T = run_.col("wire.tension"), L0 = run_.col("wire.free_length");
   const double c = std::sqrt(EA / m), kappa = c / rate;
   const double z0 = 2 * kappa * std::sqrt(L00);
