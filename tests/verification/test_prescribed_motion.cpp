@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "memory_recorder.hpp"
@@ -100,6 +101,8 @@ dynamics: {{integrator: {integrator}, time_step: 0.002, duration: 30, output_int
     EXPECT_NEAR(amp / X, 1.0, 0.005)
         << integrator << ": amplitude " << amp << " m, closed form " << X << " m";
     EXPECT_NEAR(ph, phi, 0.005) << integrator;
+    std::printf("%s: amplitude %.6f m (closed form %.6f m, error %.2e), phase error %.2e rad\n",
+                integrator, amp, X, amp / X - 1.0, ph - phi);
   }
 }
 
@@ -140,6 +143,7 @@ dynamics: {{integrator: {}, time_step: 0.01, duration: 10, output_interval: 0.1}
         worst = std::max(worst, std::abs(v[i] - expect));
       }
       EXPECT_LT(worst, j < 3 ? 1e-7 : 1e-5) << integrator << " " << names[j];
+      std::printf("%s %s: largest deviation %.2e\n", integrator, names[j], worst);
     }
   }
 }
@@ -173,6 +177,7 @@ dynamics: {integrator: rk4, time_step: 0.01, duration: 6, output_interval: 0.5}
                          "vessel.motion.mx", "vessel.motion.my", "vessel.motion.mz"};
   std::vector<std::vector<double>> cols;
   for (const char* n : names) cols.push_back(r.col(n));
+  double worst_f = 0.0, worst_m = 0.0;
   for (std::size_t i = 1; i < r.rec.times.size(); ++i) {
     const MotionPose p = compute_motion_pose(motion.sample(r.rec.times[i]));
     const Vec3 F = mass * (p.p_tt - Vec3(0, 0, -9.81));
@@ -182,11 +187,15 @@ dynamics: {integrator: rk4, time_step: 0.01, duration: 6, output_interval: 0.5}
     const Mat3 Iw = p.R * I * p.R.transpose();
     const Vec3 M = Iw * wd + w.cross(Iw * w);
     for (int j = 0; j < 3; ++j) {
+      worst_f = std::max(worst_f, std::abs(cols[j][i] - F[j]) / F.norm());
+      worst_m = std::max(worst_m, std::abs(cols[3 + j][i] - M[j]) / M.norm());
       EXPECT_NEAR(cols[j][i], F[j], 1e-6 * F.norm()) << "t = " << r.rec.times[i] << " " << names[j];
       EXPECT_NEAR(cols[3 + j][i], M[j], 1e-6 * M.norm())
           << "t = " << r.rec.times[i] << " " << names[3 + j];
     }
   }
+  std::printf("reaction wrench: largest relative error %.2e (force), %.2e (moment)\n", worst_f,
+              worst_m);
 }
 
 // A mass m hangs from a rope (EA, free length L00, attached 0.5 m above its centre of
@@ -237,6 +246,8 @@ dynamics: {{integrator: rk4, time_step: 0.001, duration: 10, output_interval: 0.
     largest = std::max(largest, exact);
   }
   EXPECT_LT(worst, 0.005 * largest) << "largest tension " << largest << " N";
+  std::printf("winch: largest tension %.1f N, largest error %.3g N (%.2e)\n", largest, worst,
+              worst / largest);
   // the oscillation is really there (amplitude ~ EA r / (c sqrt(L00)) = 5 kN)
   EXPECT_GT(largest - m * g, 3000.0);
 }
