@@ -100,9 +100,11 @@ Joint::Joint(std::string name, JointType type, std::unique_ptr<Marker> from,
       break;
   }
 
+  // a factor of a moving marker is not constant: it turns C_q with time
   auto constant = [&](Factor f) {
     const FactorDef d = define(f);
-    return (d.sign_from == 0.0 || a.body() == nullptr) && (d.sign_to == 0.0 || b.body() == nullptr);
+    return (d.sign_from == 0.0 || (a.body() == nullptr && !a.moving())) &&
+           (d.sign_to == 0.0 || (b.body() == nullptr && !b.moving()));
   };
   linear_ = a.linear() && b.linear() && std::all_of(rows_.begin(), rows_.end(), [&](const Row& r) {
               return constant(r.u) || constant(r.w);
@@ -158,11 +160,13 @@ void Joint::evaluate(const State& state, ConstraintEval& out) const {
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     factor(rows_[r].u, state, u);
     factor(rows_[r].w, state, w);
-    // C = u . w;  C_q = u^T J_w + w^T J_u;  eq. (133): gamma = -(u . w_bias + w . u_bias +
-    // 2 u' . w'), with x'' = J q'' + bias for each factor
+    // C = u . w;  C_q = u^T J_w + w^T J_u;  C_t = u . w_t + w . u_t (moving markers);
+    // eq. (133): gamma = -(u . w_bias + w . u_bias + 2 u' . w'), with x'' = J q'' + bias
+    // for each factor (bias holds x_tt and rate holds x_t of a moving marker, so the
+    // terms 2 C_qt q' + C_tt of eq. (133) are included)
     out.C[r] = u.value.dot(w.value);
     out.Cq.row(r) = u.value.transpose() * w.J + w.value.transpose() * u.J;
-    out.Ct[r] = 0.0;
+    out.Ct[r] = u.value.dot(w.dt) + w.value.dot(u.dt);
     out.gamma[r] = -(u.value.dot(w.bias) + w.value.dot(u.bias) + 2.0 * u.rate.dot(w.rate));
   }
 }

@@ -48,6 +48,10 @@ int Rope::first_vanishing_segment(const State& state) const {
   return -1;
 }
 
+double Rope::free_length(const State& state) const {
+  return winch_ ? free_length_ + winch_->change(state.t) : free_length_;
+}
+
 double Rope::tension(const State& state) const {
   double L = 0.0, Ld = 0.0;
   PairVectorEval d;
@@ -57,8 +61,9 @@ double Rope::tension(const State& state) const {
     L += parts_[s] * l;
     if (l > 0.0) Ld += parts_[s] * d.value.dot(d.rate) / l;
   }
-  if (L <= free_length_) return 0.0;
-  return std::max(0.0, axial_stiffness_ * (L - free_length_) / free_length_ + damping_ * Ld);
+  const double L0 = free_length(state), L0d = winch_ ? winch_->rate(state.t) : 0.0;
+  if (L <= L0) return 0.0;
+  return std::max(0.0, axial_stiffness_ * (L - L0) / L0 + damping_ * (Ld - L0d));
 }
 
 void Rope::assemble(const State& state, double, AssemblyTarget& target) const {
@@ -77,9 +82,15 @@ void Rope::assemble(const State& state, double, AssemblyTarget& target) const {
     L += parts_[s] * l;
     Ld += parts_[s] * d[s].value.dot(d[s].rate) / l;
   }
-  if (L <= free_length_) return;  // slack
-  const double k = axial_stiffness_ / free_length_;
-  const double T = k * (L - free_length_) + damping_ * Ld;
+  const double L0 = free_length(state), L0d = winch_ ? winch_->rate(state.t) : 0.0;
+  if (!(L0 > 0.0))
+    throw SolverError(fmt::format("t = {:.6g} s: the winch of rope {} has hauled in its whole "
+                                  "length (free length {:.6g} m)",
+                                  state.t, name(), L0),
+                      state.t);
+  if (L <= L0) return;  // slack
+  const double k = axial_stiffness_ / L0;
+  const double T = k * (L - L0) + damping_ * (Ld - L0d);
   if (T <= 0.0) return;  // a rope cannot push, even while it shortens fast
 
   const Index m = static_cast<Index>(dofs_.size());
@@ -119,8 +130,9 @@ void Rope::assemble(const State& state, double, AssemblyTarget& target) const {
 }
 
 double Rope::potential_energy(const State& state) const {
-  const double x = length(state) - free_length_;
-  return x > 0.0 ? 0.5 * axial_stiffness_ / free_length_ * x * x : 0.0;
+  const double L0 = free_length(state);
+  const double x = length(state) - L0;
+  return x > 0.0 ? 0.5 * axial_stiffness_ / L0 * x * x : 0.0;
 }
 
 void Rope::add_channels(ChannelList& channels) const {
@@ -128,6 +140,9 @@ void Rope::add_channels(ChannelList& channels) const {
       {fmt::format("{}.tension", name()), [this](const State& s) { return tension(s); }});
   channels.push_back(
       {fmt::format("{}.length", name()), [this](const State& s) { return length(s); }});
+  if (winch_)
+    channels.push_back(
+        {fmt::format("{}.free_length", name()), [this](const State& s) { return free_length(s); }});
 }
 
 }  // namespace seaflex

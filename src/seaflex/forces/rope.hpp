@@ -5,7 +5,9 @@
 //
 //   L = sum_i n_i |d_i|,  d_i = p_{i+1} - p_i;   T = EA (L - L0) / L0 + c L'  while L > L0
 //
-// and T = 0 while the rope is slack (a rope never pushes, also while it shortens fast).
+// and T = 0 while the rope is slack. On a winch (forces/winch.hpp) the free length follows
+// time, L0(t) = L0 + dL0(t), and the damping acts on the stretch rate L' - L0'(t).
+// (a rope never pushes, also while it shortens fast).
 // The tension is the same in every part (frictionless sheaves): point p_i is pulled by
 // n_i T towards p_{i+1} and by n_{i-1} T towards p_{i-1}; the generalized force is
 // Q = -T dL/dq. Exact tangents:
@@ -15,8 +17,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "seaflex/forces/winch.hpp"
 #include "seaflex/model/force.hpp"
 #include "seaflex/model/marker_pair.hpp"
 
@@ -38,6 +42,10 @@ class Rope : public Force {
   double tension(const State& state) const;  ///< N, >= 0
   int num_segments() const { return static_cast<int>(segments_.size()); }
   double free_length() const { return free_length_; }
+  /// The free length at the state's time, L0 + dL0(t) (m).
+  double free_length(const State& state) const;
+  /// Puts the rope on a winch.
+  void set_winch(Winch winch) { winch_ = std::move(winch); }
   void set_free_length(double free_length) { free_length_ = free_length; }
   double axial_stiffness() const { return axial_stiffness_; }
   /// The first segment whose two points coincide in state (-1: none).
@@ -49,6 +57,7 @@ class Rope : public Force {
   double free_length_;
   double axial_stiffness_;                // EA (N)
   double damping_;                        // N s/m on L'
+  std::optional<Winch> winch_;            // the free length follows time when set
   std::vector<Index> dofs_;               // union of all markers' coordinates
   std::vector<std::vector<Index>> cols_;  // per segment: pair column -> union column
   math::BlockId block_ = -1;

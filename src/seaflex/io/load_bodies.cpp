@@ -4,8 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "seaflex/constraints/joint.hpp"
 #include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/io/load_context.hpp"
+#include "seaflex/math/rotation.hpp"
+#include "seaflex/model/moving_marker.hpp"
 
 namespace seaflex::io {
 
@@ -231,10 +234,10 @@ std::optional<Mat3> read_inertia(MapReader& r) {
   return I;
 }
 
-std::unique_ptr<Body> build_rigid_body(MapReader& r, const std::string& name, LoadContext&) {
+std::unique_ptr<Body> build_rigid_body(MapReader& r, const std::string& name, LoadContext& ctx) {
   const auto mass = r.number("mass", Need::kRequired, NumberRule::positive("kg"));
   const auto inertia = read_inertia(r);
-  const auto position = r.vec3("position", Need::kRequired, "m");
+  auto position = r.vec3("position", Need::kRequired, "m");
   RigidBodyInitial init;
   bool ok = true;
   if (const auto o = read_orientation(r, false))
@@ -253,9 +256,50 @@ std::unique_ptr<Body> build_rigid_body(MapReader& r, const std::string& name, Lo
     else
       ok = false;
   }
+  // motion: free (default) or imposed; the RAO frame is the global frame (rao_motion.hpp)
+  const auto motion = read_motion(r, "motion", position.value_or(Vec3::Zero()), true, ctx);
+  if (!motion) ok = false;
+  if (motion && motion->motion) {
+    if (r.has("velocity") || r.has("angular_velocity"))
+      r.error(r.has("velocity") ? "velocity" : "angular_velocity",
+              "a body with an imposed motion takes its velocity from the motion; remove "
+              "velocity and angular_velocity or set motion: free");
+    const YAML::Node mn = r.get("motion");
+    const YAML::Node type = mn["type"];
+    if (type.IsScalar() && type.Scalar() == "rao" &&
+        std::abs(math::roll_pitch_yaw_from_rotation(init.orientation)[2]) > 1e-12)
+      r.error("orientation",
+              "a body driven by RAOs must not be turned in yaw: its RAO "
+              "headings are the global wave directions");
+    if (position) {
+      ctx.prescribed[name] = {*motion, r.get("motion").Mark(), *position, init.orientation};
+      // the body starts on the motion at t = 0: its pose and velocities
+      const MotionPose pose = compute_motion_pose(motion->motion->sample(0.0));
+      const MovingVector p = displaced_point(pose, motion->origin, *position);
+      const Mat3 W = pose.R_t * pose.R.transpose();  // w~ = R' R^T
+      init.velocity = p.rate;
+      init.angular_velocity = Vec3(W(2, 1), W(0, 2), W(1, 0));
+      init.orientation = pose.R * init.orientation;
+      position = p.value;
+    }
+  }
   if (!mass || !inertia || !position || !ok) return nullptr;
   init.position = *position;
   return std::make_unique<RigidBody>(name, *mass, *inertia, init);
+}
+
+// the body follows the motion: a fixed joint from a moving ground marker (the body's
+// reference point and axes at rest, displaced by the motion) to the body; its reaction
+// channels <body>.motion.fx ... mz are the wrench the motion exerts on the body
+void add_prescribed_body(const RigidBody& body, const LoadContext::Prescribed& pre,
+                         const std::string& path, LoadContext& ctx) {
+  auto from = std::make_unique<MovingMarker>(pre.motion.motion, pre.motion.origin,
+                                             pre.rest_position, pre.rest_orientation);
+  auto to = std::make_unique<RigidBodyMarker>(body, Vec3::Zero());
+  const std::string name = body.name() + ".motion";
+  ctx.constraint_origin[name] = {pre.mark, path + ".motion"};
+  ctx.system.add_constraint(
+      std::make_unique<Joint>(name, JointType::kFixed, std::move(from), std::move(to)));
 }
 
 }  // namespace
@@ -319,7 +363,10 @@ void load_bodies(const YAML::Node& node, LoadContext& ctx) {
     r.finish();
     if (body && !ctx.system.find_body(name)) {
       coordinates += body->num_coordinates();
+      const Body& added = *body;
       ctx.system.add_body(std::move(body));
+      if (const auto it = ctx.prescribed.find(name); it != ctx.prescribed.end())
+        add_prescribed_body(dynamic_cast<const RigidBody&>(added), it->second, path, ctx);
     } else
       ctx.failed_bodies.push_back(name);
   }

@@ -89,6 +89,42 @@ void load_rope(MapReader& r, const YAML::Node& node, const std::string& path,
   else
     free_length = r.number("free_length", Need::kRequired, NumberRule::positive("m"));
 
+  // a winch: the free length changes at a constant rate or by a time table
+  std::optional<Winch> winch;
+  bool winch_ok = true;
+  if (const YAML::Node wn = r.get("winch"); wn.IsDefined()) {
+    MapReader w(ctx.diag, wn, r.key_path("winch"));
+    winch_ok = false;
+    if (w.valid()) {
+      const bool by_rate = w.has("rate"), by_table = w.has("table");
+      if (by_rate == by_table) {
+        w.error(by_table ? "table" : "rate",
+                "give either rate (m/s, paying out > 0) or table ([t, change] rows in s, m)");
+        w.has("start");
+      } else if (by_rate) {
+        const auto rate = w.number("rate", Need::kRequired, NumberRule::any("m/s"));
+        const auto start = w.number("start", Need::kOptional, NumberRule::nonnegative("s"));
+        if (rate) {
+          winch = Winch::constant_rate(*rate, start.value_or(0.0));
+          winch_ok = true;
+        }
+      } else if (const auto t = w.table("table", Need::kRequired, 2)) {
+        std::vector<double> times, changes;
+        for (const auto& row : *t) {
+          times.push_back(row[0]);
+          changes.push_back(row[1]);
+        }
+        if (times.size() < 2) {
+          w.error("table", "a winch table needs at least two rows");
+        } else {
+          winch = Winch::table(std::move(times), std::move(changes));
+          winch_ok = true;
+        }
+      }
+      w.finish();
+    }
+  }
+
   // the points
   std::vector<std::unique_ptr<Marker>> points;
   bool points_ok = pnode.IsDefined();
@@ -128,7 +164,8 @@ void load_rope(MapReader& r, const YAML::Node& node, const std::string& path,
     parts.assign(points.size() - 1, 1);
   }
   r.finish();
-  if (!name || !ea || !damping || !(free_length || initial_tension) || !points_ok || !parts_ok)
+  if (!name || !ea || !damping || !(free_length || initial_tension) || !points_ok || !parts_ok ||
+      !winch_ok)
     return;
   std::set<const Body*> bodies;
   for (const auto& m : points) bodies.insert(m->body());
@@ -150,6 +187,7 @@ void load_rope(MapReader& r, const YAML::Node& node, const std::string& path,
   }
   auto rope = std::make_unique<Rope>(*name, std::move(segments), parts, free_length.value_or(1.0),
                                      *ea, *damping);
+  if (winch) rope->set_winch(std::move(*winch));
   Rope* rp = rope.get();
   ctx.connection_origin[*name] = {node.Mark(), path};
   ctx.system.add_force(std::move(rope));

@@ -15,12 +15,20 @@
 #include "seaflex/forces/hydro_matrices.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/yaml_reader.hpp"
+#include "seaflex/model/motion.hpp"
 #include "seaflex/model/time_signal.hpp"
 
 namespace seaflex::io {
 
 /// The reserved body name of the fixed world frame in marker references.
 inline constexpr std::string_view kGroundName = "ground";
+
+/// An imposed motion (load_motion.cpp): motion is null for `free` or an absent key;
+/// origin is the point its rotations turn about.
+struct MotionEntry {
+  std::shared_ptr<const Motion> motion;
+  Vec3 origin = Vec3::Zero();
+};
 
 struct LoadContext {
   Diagnostics& diag;
@@ -42,6 +50,15 @@ struct LoadContext {
   /// initial geometry (a cylinder's reference length, a rope's free length from its
   /// initial tension) and checks of it; they report problems to diag
   std::vector<std::function<void(const State& s0)>> at_start;
+  /// rigid bodies with an imposed motion (body name -> motion, where `motion` was given);
+  /// load_bodies adds the prescribing joint once the body is in the system
+  struct Prescribed {
+    MotionEntry motion;
+    YAML::Mark mark;
+    Vec3 rest_position;  ///< the body's pose that the motion displaces
+    Mat3 rest_orientation;
+  };
+  std::map<std::string, Prescribed> prescribed;
   /// where each output.channels pattern was given (mark, key path), in order
   std::vector<std::pair<YAML::Mark, std::string>> output_patterns;
 
@@ -79,6 +96,12 @@ const std::map<std::string, IntegratorBuilder>& integrator_builders();
 /// [phi, theta, psi] (deg, thesis eq. 136) or, when allow_axis, `axis` [x, y, z] (the z
 /// axis; x and y completed); identity when none is given, nullopt after an error.
 std::optional<Mat3> read_orientation(MapReader& reader, bool allow_axis);
+
+/// Reads owner's key as a motion (`free` only when allow_free); nullopt after a reported
+/// problem.
+std::optional<MotionEntry> read_motion(MapReader& owner, std::string_view key,
+                                       const Vec3& default_origin, bool allow_free,
+                                       LoadContext& ctx);
 
 /// A load's time factor from optional `ramp` or `factor_table` (load_loads.cpp); constant 1
 /// when neither is given, nullopt after an error.

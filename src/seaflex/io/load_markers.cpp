@@ -8,6 +8,7 @@
 #include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/math/rotation.hpp"
+#include "seaflex/model/moving_marker.hpp"
 
 namespace seaflex::io {
 
@@ -93,7 +94,12 @@ std::unique_ptr<Marker> LoadContext::marker(const YAML::Node& node, const std::s
   if (ground) {
     const auto p = r.vec3("position", Need::kRequired, "m (world)");
     const auto frame = read_orientation(r, true);
-    if (p && frame) m = std::make_unique<GroundMarker>(*p, *frame);
+    // a ground marker may move: its point and axes follow an imposed motion
+    const auto motion = read_motion(r, "motion", p.value_or(Vec3::Zero()), false, *this);
+    if (p && frame && motion && motion->motion)
+      m = std::make_unique<MovingMarker>(motion->motion, motion->origin, *p, *frame);
+    else if (p && frame && motion)
+      m = std::make_unique<GroundMarker>(*p, *frame);
   } else if (const auto* beam = dynamic_cast<const AncfBeam*>(body)) {
     for (const char* k : {"position", "orientation", "axis", "euler_zxz"})
       if (r.has(k))
@@ -129,7 +135,8 @@ std::unique_ptr<Marker> LoadContext::marker(const YAML::Node& node, const std::s
   } else if (const auto* plate = dynamic_cast<const AncfPlate*>(body)) {
     m = plate_marker(r, *plate);
   } else {
-    for (const char* k : {"position", "orientation", "axis", "euler_zxz", "node", "arc_length"})
+    for (const char* k :
+         {"position", "orientation", "axis", "euler_zxz", "node", "arc_length", "motion"})
       r.has(k);
   }
   r.finish();

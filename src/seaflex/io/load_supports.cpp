@@ -5,6 +5,7 @@
 #include <set>
 
 #include "seaflex/constraints/coordinate_lock.hpp"
+#include "seaflex/constraints/prescribed_coordinates.hpp"
 #include "seaflex/io/load_context.hpp"
 
 namespace seaflex::io {
@@ -71,8 +72,15 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
         }
       }
     }
+    // a support that moves: the held components follow an imposed motion about the node
+    std::optional<MotionEntry> motion = MotionEntry{};
+    if (r.has("motion")) {
+      Vec3 node_position = Vec3::Zero();
+      if (beam && k) node_position = beam->initial_geometry().positions[*k];
+      motion = read_motion(r, "motion", node_position, false, ctx);
+    }
     r.finish();
-    if (!beam || !k || !type || components.empty()) continue;
+    if (!beam || !k || !type || components.empty() || !motion) continue;
     std::vector<Index> locals;
     std::vector<double> values;
     std::vector<std::string> labels;
@@ -93,6 +101,19 @@ void load_supports(const YAML::Node& node, LoadContext& ctx) {
                                   "be held only once",
                                   beam->name(), *k, fmt::join(twice, ", ")));
     if (locals.empty()) continue;
+    if (motion->motion) {
+      std::vector<PrescribedCoordinates::Row> rows;
+      for (std::size_t j = 0; j < locals.size(); ++j) {
+        const int comp = static_cast<int>(locals[j] - 6 * *k);
+        rows.push_back(
+            {locals[j], comp < 3, comp < 3 ? g.positions[*k] : g.slopes[*k], comp % 3, labels[j]});
+      }
+      const std::string cname = fmt::format("{}.n{}.support", beam->name(), *k);
+      ctx.constraint_origin[cname] = {node[i].Mark(), path};
+      ctx.system.add_constraint(std::make_unique<PrescribedCoordinates>(
+          cname, *beam, std::move(rows), motion->motion, motion->origin));
+      continue;
+    }
     const std::string cname = fmt::format("support {}.n{}", beam->name(), *k);
     ctx.constraint_origin[cname] = {node[i].Mark(), path};
     ctx.system.add_constraint(

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "seaflex/constraints/joint.hpp"
+#include "seaflex/constraints/prescribed_coordinates.hpp"
 #include "seaflex/forces/gravity.hpp"
 #include "seaflex/forces/rotational_spring.hpp"
 #include "seaflex/forces/spring_damper.hpp"
@@ -87,6 +88,16 @@ void check_constraints(LoadContext& ctx) {
     const auto colon = full.find(": ");
     return colon == std::string::npos ? full : full.substr(colon + 2);
   };
+  // a constraint that follows an imposed motion: the motion at t = 0 must meet the model's
+  // initial positions and velocities, which a ramp from rest guarantees
+  auto moving_hint = [](const Constraint* c) -> std::string {
+    const auto* j = dynamic_cast<const Joint*>(c);
+    if (dynamic_cast<const PrescribedCoordinates*>(c) ||
+        (j && (j->from().moving() || j->to().moving())))
+      return "; it follows an imposed motion, which must start where the model starts: give "
+             "the motion a ramp (it then starts from rest at zero displacement)";
+    return "";
+  };
   std::set<const Constraint*> reported;
   for (const RedundantRow& red : audit.redundant) {
     const Constraint* c = sys.constraint_at_row(red.row);
@@ -98,16 +109,24 @@ void check_constraints(LoadContext& ctx) {
       if (o != c && std::find(others.begin(), others.end(), n) == others.end()) others.push_back(n);
     }
     const auto [mark, path] = origin(c);
+    // a body with an imposed motion is held in all six degrees of freedom
+    bool prescribed = moving_hint(c) != "";
+    for (Index r : red.depends_on)
+      prescribed = prescribed || moving_hint(sys.constraint_at_row(r)) != "";
     ctx.diag.error(
         mark, path,
         fmt::format("'{}' over-constrains the assembly: its condition '{}' repeats what {} "
-                    "already impose{}; remove it or use a joint with fewer conditions (a closed "
-                    "loop of parallel revolute joints, such as a four-bar, needs a ball and a "
-                    "universal joint in place of two of its revolutes)",
+                    "already impose{}; {}",
                     c->name(), label(red.row),
                     others.empty() ? std::string("earlier constraints")
                                    : fmt::format("{}", fmt::join(others, ", ")),
-                    others.size() == 1 ? "s" : ""));
+                    others.size() == 1 ? "s" : "",
+                    prescribed ? "an imposed motion holds its body or point in every degree of "
+                                 "freedom it moves, so nothing else may hold it there: remove the "
+                                 "joint or support, or set the body's motion: free"
+                               : "remove it or use a joint with fewer conditions (a closed loop of "
+                                 "parallel revolute joints, such as a four-bar, needs a ball and a "
+                                 "universal joint in place of two of its revolutes)"));
   }
   for (const ViolatedRow& v : audit.violated) {
     const Constraint* c = sys.constraint_at_row(v.row);
@@ -122,8 +141,8 @@ void check_constraints(LoadContext& ctx) {
     const auto [mark, path] = origin(c);
     ctx.diag.error(mark, path,
                    fmt::format("'{}' is not satisfied by the initial positions: condition '{}' is "
-                               "off by {:.6g}{}; place the bodies so that the joint closes",
-                               c->name(), label(v.row), std::abs(v.value), detail));
+                               "off by {:.6g}{}; place the bodies so that the joint closes{}",
+                               c->name(), label(v.row), std::abs(v.value), detail, moving_hint(c)));
   }
   for (const ViolatedRow& v : audit.velocity_violated) {
     const Constraint* c = sys.constraint_at_row(v.row);
@@ -132,8 +151,8 @@ void check_constraints(LoadContext& ctx) {
     ctx.diag.error(
         mark, path,
         fmt::format("'{}' is not satisfied by the initial velocities: condition '{}' changes at "
-                    "{:.6g} per second; give the bodies velocities that the joint allows",
-                    c->name(), label(v.row), std::abs(v.value)));
+                    "{:.6g} per second; give the bodies velocities that the joint allows{}",
+                    c->name(), label(v.row), std::abs(v.value), moving_hint(c)));
   }
 }
 
@@ -181,7 +200,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();

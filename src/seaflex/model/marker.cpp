@@ -22,6 +22,7 @@ void GroundMarker::evaluate(MarkerVector which, const State&, MarkerVectorEval& 
   out.value = k == 0 ? position_ : Vec3(frame_.col(k - 1));
   out.rate.setZero();
   out.bias.setZero();
+  out.dt.setZero();
   out.J.resize(3, 0);
   out.Jv.resize(3, 0);
 }

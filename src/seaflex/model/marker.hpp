@@ -31,8 +31,9 @@ enum class MarkerVector : int { kPoint = 0, kAxisX = 1, kAxisY = 2, kAxisZ = 3 }
 
 struct MarkerVectorEval {
   Vec3 value = Vec3::Zero();
-  Vec3 rate = Vec3::Zero();  ///< J v
-  Vec3 bias = Vec3::Zero();  ///< J' v: x'' = J q'' + bias
+  Vec3 rate = Vec3::Zero();  ///< dx/dt = J v + x_t
+  Vec3 bias = Vec3::Zero();  ///< J' v (+ x_tt for a moving marker): x'' = J q'' + bias
+  Vec3 dt = Vec3::Zero();    ///< x_t, the explicit time derivative (moving markers only)
   MarkerJacobian J;          ///< dx/dq, 3 x coordinates().size()
   MarkerJacobian Jv;         ///< d(J v)/dq
 };
@@ -57,6 +58,8 @@ class Marker {
 
   /// True when every vector of the marker is linear in q (beam, ground).
   virtual bool linear() const = 0;
+  /// True when the marker's vectors depend on time explicitly (a moving ground marker).
+  virtual bool moving() const { return false; }
 
   Vec3 position(const State& state) const;
 };

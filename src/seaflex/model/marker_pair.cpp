@@ -31,13 +31,16 @@ void MarkerPair::evaluate(MarkerVector which, double sign_a, double sign_b, cons
   out.value.setZero();
   out.rate.setZero();
   out.bias.setZero();
+  out.dt.setZero();
   out.J.setZero(3, n);
   out.Jv.setZero(3, n);
   MarkerVectorEval e;
   auto add = [&](const Marker& m, const std::vector<Index>& cols, double sign) {
     if (sign == 0.0) return;
+    e.dt.setZero();  // markers fixed on bodies leave it alone
     m.evaluate(which, state, e);
     out.value += sign * e.value;
+    out.dt += sign * e.dt;
     out.rate += sign * e.rate;
     out.bias += sign * e.bias;
     for (std::size_t c = 0; c < cols.size(); ++c) {

@@ -20,7 +20,8 @@ using PairVector =
 struct PairVectorEval {
   Vec3 value = Vec3::Zero();
   Vec3 rate = Vec3::Zero();
-  Vec3 bias = Vec3::Zero();  ///< J' v
+  Vec3 bias = Vec3::Zero();  ///< J' v (+ x_tt of moving markers)
+  Vec3 dt = Vec3::Zero();    ///< explicit time derivative x_t (moving markers)
   PairJacobian J;            ///< d value / dq on the union
   PairJacobian Jv;           ///< d rate / dq on the union
 };

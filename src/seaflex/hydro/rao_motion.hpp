@@ -1,0 +1,55 @@
+// The motion of a vessel driven by displacement RAOs in the model's own waves: every wave
+// component (its own frequency, heading, amplitude and phase) gives a response
+//   x_j(t) = sum_k Re{ H_j(w_k, beta_k) A_k e^{i w_k t} }
+//   A_k = a_k e^{i (phi_k - k_k (o_x cos beta_k + o_y sin beta_k))}   (reference: RAO origin)
+//   A_k = a_k e^{i phi_k}                                            (reference: global origin)
+// about the RAO origin o, with H interpolated in frequency and heading (rao_table.hpp) and
+// the wave elevation eta = a cos(w t - k (x cos b + y sin b) + phi) of wave_field.hpp. So
+// in a regular wave of amplitude a the response is a |H_j| cos(w t + arg H_j - k.o + phi):
+// its amplitude a |H_j|, its crest (maximum) leading the wave crest at o by arg H_j.
+// The RAO frame is the global frame: the vessel's headings are the wave directions (the
+// loader refuses a vessel turned in yaw).
+#pragma once
+
+#include <complex>
+#include <vector>
+
+#include "seaflex/hydro/rao_table.hpp"
+#include "seaflex/hydro/wave_component.hpp"
+#include "seaflex/model/motion.hpp"
+
+namespace seaflex::hydro {
+
+class RaoMotion : public Motion {
+ public:
+  /// The table is interpolated once per component here. *clamped (if given) is set to the
+  /// number of components whose heading lies outside the table's headings (clamped).
+  RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& components, const Vec3& origin,
+            RaoPhaseReference reference, int* clamped = nullptr);
+  MotionSample sample(double t) const override;
+
+  /// The complex amplitude H A of component k (x_j = Re{c_j e^{i w t}}).
+  const Vec6c& complex_amplitude(std::size_t k) const { return terms_.at(k).c; }
+
+ private:
+  struct Term {
+    double omega;
+    Vec6c c;
+  };
+  std::vector<Term> terms_;
+};
+
+/// The sum of two motions' displacements (a slow drift added to a wave-frequency motion;
+/// the angles add, which is exact for rotations about one axis and a small-angle
+/// approximation otherwise).
+class SumMotion : public Motion {
+ public:
+  SumMotion(std::shared_ptr<const Motion> a, std::shared_ptr<const Motion> b)
+      : a_(std::move(a)), b_(std::move(b)) {}
+  MotionSample sample(double t) const override;
+
+ private:
+  std::shared_ptr<const Motion> a_, b_;
+};
+
+}  // namespace seaflex::hydro
