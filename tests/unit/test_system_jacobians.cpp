@@ -9,6 +9,7 @@
 #include "seaflex/forces/distributed_load.hpp"
 #include "seaflex/forces/gravity.hpp"
 #include "seaflex/forces/point_load.hpp"
+#include "seaflex/io/model_loader.hpp"
 #include "seaflex/system/system.hpp"
 
 using namespace seaflex;
@@ -191,4 +192,57 @@ TEST(SystemJacobians, MassTimesAccelerationDerivative) {
   }
   EXPECT_GT(fd.norm(), 1.0);  // the derivative is not trivially zero
   EXPECT_LT((dMa - fd).lpNorm<Eigen::Infinity>(), 1e-7 * fd.lpNorm<Eigen::Infinity>());
+}
+
+// the same for the added mass of a Morison beam, which turns with the beam's axis:
+// Ca rho A (I - t t^T) at every wet quadrature point (a tilted, bent riser in water)
+TEST(SystemJacobians, TurningAddedMassDerivative) {
+  io::Model model = io::load_model_text(R"(
+environment: {gravity: 9.81, water: {density: 1025, depth: 100}}
+bodies:
+  riser: {type: ancf_beam, start: [0, 0, -100], end: [20, 5, -10], elements: 4,
+          outer_diameter: 0.5, inner_diameter: 0.4, youngs_modulus: 210e9, density: 7850}
+hydrodynamics:
+  riser: {cd: 1.0, cm: 2.0}
+)",
+                                        "morison.yaml");
+  System& sys = *model.system;
+  State s = sys.initial_state();
+  const Index n = sys.num_coordinates();
+  s.q += 0.05 * VecX::Random(n);  // bent and stretched
+  const VecX a = VecX::Random(n);
+  DaeEval ev = sys.make_eval();
+  DaeRequest req;
+  req.forces = false;
+  req.constraints = false;
+  req.matrix = true;
+  req.scales.kq = 1.0;
+  req.acceleration = &a;
+  sys.evaluate(s, req, ev);
+  DaeEval ev0 = sys.make_eval();
+  req.acceleration = nullptr;
+  sys.evaluate(s, req, ev0);
+  // the d(M a)/dq part alone: the matrix with the acceleration minus the one without
+  const MatX dMa =
+      MatX(ev.kkt.matrix()).topLeftCorner(n, n) - MatX(ev0.kkt.matrix()).topLeftCorner(n, n);
+  auto mass_times = [&](const State& st) {
+    DaeEval e = sys.make_eval();
+    DaeRequest r;
+    r.forces = false;
+    r.constraints = false;
+    r.matrix = true;
+    r.scales.km = 1.0;
+    sys.evaluate(st, r, e);
+    return VecX(MatX(e.kkt.matrix()).topLeftCorner(n, n) * a);
+  };
+  MatX fd(n, n);
+  const double eps = 1e-6;
+  for (Index j = 0; j < n; ++j) {
+    State p = s, m = s;
+    p.q[j] += eps;
+    m.q[j] -= eps;
+    fd.col(j) = (mass_times(p) - mass_times(m)) / (2 * eps);
+  }
+  EXPECT_GT(fd.norm(), 1.0);
+  EXPECT_LT((dMa - fd).lpNorm<Eigen::Infinity>(), 1e-6 * fd.lpNorm<Eigen::Infinity>());
 }
