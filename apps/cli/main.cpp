@@ -12,9 +12,9 @@
 #include <iterator>
 #include <numbers>
 
+#include "fatigue_command.hpp"
 #include "mode_output.hpp"
 #include "option_checks.hpp"
-#include "fatigue_command.hpp"
 #include "plot_command.hpp"
 #include "progress_line.hpp"
 #include "seaflex/core/checkpoint.hpp"
@@ -282,7 +282,7 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   }
   Outputs outputs(model, dir, "statics", false);
   outputs.write_row(io::output_channels(model), state);
-  fmt::print("{}", outputs.design_summary());
+  if (!quiet) fmt::print("{}", outputs.design_summary());
   return state;
 }
 

@@ -126,7 +126,7 @@ def read_csv(path):
 class FatigueRun(TempDirCase):
     def test_damage_equals_independent_rainflow(self):
         out = os.path.join(self.dir, "out")
-        r = run("run", self.model(RISER), "-o", out, "-q")
+        r = run("run", self.model(RISER), "-o", out)  # not -q: it silences the summary
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("fatigue: damage", r.stdout)
         self.assertIn("code check DNV-ST-F201: governing utilisation", r.stdout)
