@@ -147,6 +147,40 @@ TEST(SystemJacobians, BeamMarkerJacobian) {
   EXPECT_EQ(BeamMarker(beam, beam.node_arc_length(2)).describe(), "beam.n2");
 }
 
+namespace {
+
+// the top-left n x n block of the system matrix for these scales (and accelerations)
+MatX matrix_block(const System& sys, const State& s, MatrixScales scales, const VecX* a) {
+  DaeEval e = sys.make_eval();
+  DaeRequest r;
+  r.forces = false;
+  r.constraints = false;
+  r.matrix = true;
+  r.scales = scales;
+  r.acceleration = a;
+  sys.evaluate(s, r, e);
+  const Index n = sys.num_coordinates();
+  return MatX(e.kkt.matrix()).topLeftCorner(n, n);
+}
+
+// central differences (step 1e-6) of M(q) a over every coordinate
+MatX mass_times_derivative_fd(const System& sys, const State& s, const VecX& a) {
+  const Index n = sys.num_coordinates();
+  MatX fd(n, n);
+  const double eps = 1e-6;
+  for (Index j = 0; j < n; ++j) {
+    State p = s, m = s;
+    p.q[j] += eps;
+    m.q[j] -= eps;
+    fd.col(j) = (matrix_block(sys, p, MatrixScales{1.0, 0.0, 0.0}, nullptr) * a -
+                 matrix_block(sys, m, MatrixScales{1.0, 0.0, 0.0}, nullptr) * a) /
+                (2 * eps);
+  }
+  return fd;
+}
+
+}  // namespace
+
 // d(M(q) a)/dq (DaeRequest::acceleration, for implicit integrators) equals the central
 // difference of M(q) a for a rigid body, whose Euler-parameter mass block 4 Gbar^T J' Gbar
 // depends on q; tolerance 1e-7 of the entries' scale (central differences at 1e-6: error
@@ -162,34 +196,9 @@ TEST(SystemJacobians, MassTimesAccelerationDerivative) {
   State s = sys.initial_state();
   const Index n = sys.num_coordinates();
   s.q.tail<4>() += 0.05 * math::Vec4(0.3, -0.2, 0.5, 0.1);  // off the unit sphere too
-  VecX a = VecX::Random(n);
-  DaeEval ev = sys.make_eval();
-  DaeRequest req;
-  req.forces = false;
-  req.constraints = false;
-  req.matrix = true;
-  req.scales.kq = 1.0;
-  req.acceleration = &a;
-  sys.evaluate(s, req, ev);
-  const MatX dMa = MatX(ev.kkt.matrix()).topLeftCorner(n, n);
-  auto mass_times = [&](const State& st) {
-    DaeEval e = sys.make_eval();
-    DaeRequest r;
-    r.forces = false;
-    r.constraints = false;
-    r.matrix = true;
-    r.scales.km = 1.0;
-    sys.evaluate(st, r, e);
-    return VecX(MatX(e.kkt.matrix()).topLeftCorner(n, n) * a);
-  };
-  MatX fd(n, n);
-  const double eps = 1e-6;
-  for (Index j = 0; j < n; ++j) {
-    State p = s, m = s;
-    p.q[j] += eps;
-    m.q[j] -= eps;
-    fd.col(j) = (mass_times(p) - mass_times(m)) / (2 * eps);
-  }
+  const VecX a = VecX::Random(n);
+  const MatX dMa = matrix_block(sys, s, MatrixScales{0.0, 1.0, 0.0}, &a);
+  const MatX fd = mass_times_derivative_fd(sys, s, a);
   EXPECT_GT(fd.norm(), 1.0);  // the derivative is not trivially zero
   EXPECT_LT((dMa - fd).lpNorm<Eigen::Infinity>(), 1e-7 * fd.lpNorm<Eigen::Infinity>());
 }
@@ -211,38 +220,10 @@ hydrodynamics:
   const Index n = sys.num_coordinates();
   s.q += 0.05 * VecX::Random(n);  // bent and stretched
   const VecX a = VecX::Random(n);
-  DaeEval ev = sys.make_eval();
-  DaeRequest req;
-  req.forces = false;
-  req.constraints = false;
-  req.matrix = true;
-  req.scales.kq = 1.0;
-  req.acceleration = &a;
-  sys.evaluate(s, req, ev);
-  DaeEval ev0 = sys.make_eval();
-  req.acceleration = nullptr;
-  sys.evaluate(s, req, ev0);
   // the d(M a)/dq part alone: the matrix with the acceleration minus the one without
-  const MatX dMa =
-      MatX(ev.kkt.matrix()).topLeftCorner(n, n) - MatX(ev0.kkt.matrix()).topLeftCorner(n, n);
-  auto mass_times = [&](const State& st) {
-    DaeEval e = sys.make_eval();
-    DaeRequest r;
-    r.forces = false;
-    r.constraints = false;
-    r.matrix = true;
-    r.scales.km = 1.0;
-    sys.evaluate(st, r, e);
-    return VecX(MatX(e.kkt.matrix()).topLeftCorner(n, n) * a);
-  };
-  MatX fd(n, n);
-  const double eps = 1e-6;
-  for (Index j = 0; j < n; ++j) {
-    State p = s, m = s;
-    p.q[j] += eps;
-    m.q[j] -= eps;
-    fd.col(j) = (mass_times(p) - mass_times(m)) / (2 * eps);
-  }
+  const MatX dMa = matrix_block(sys, s, MatrixScales{0.0, 1.0, 0.0}, &a) -
+                   matrix_block(sys, s, MatrixScales{0.0, 1.0, 0.0}, nullptr);
+  const MatX fd = mass_times_derivative_fd(sys, s, a);
   EXPECT_GT(fd.norm(), 1.0);
   EXPECT_LT((dMa - fd).lpNorm<Eigen::Infinity>(), 1e-6 * fd.lpNorm<Eigen::Infinity>());
 }
