@@ -29,36 +29,68 @@ void Diagnostics::throw_if_any() const {
 
 namespace {
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+int lower(char c) {
+  return std::tolower(static_cast<unsigned char>(c));
+}
+
+// Levenshtein distance (case-insensitive) when it is at most k, else k + 1: Ukkonen's band,
+// only the cells with |i - j| <= k can hold a distance <= k (E. Ukkonen, "Algorithms for
+// approximate string matching", Information and Control 64, 1985). O(min(|a|, |b|) k)
+// operations instead of O(|a| |b|); *cells counts the cells filled.
+std::size_t bounded_edit_distance(std::string_view a, std::string_view b, std::size_t k,
+                                  std::size_t* cells) {
+  if (a.size() > b.size()) std::swap(a, b);
+  if (b.size() - a.size() > k) return k + 1;
+  const std::size_t over = k + 1;
+  std::vector<std::size_t> prev(b.size() + 1, over), cur(b.size() + 1, over);
+  for (std::size_t j = 0; j <= std::min(b.size(), k); ++j) prev[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t sub =
-          prev[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1);
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+    const std::size_t lo = i > k ? i - k : 1;
+    const std::size_t hi = std::min(b.size(), i + k);
+    cur[lo - 1] = lo == 1 && i <= k ? i : over;
+    std::size_t row_min = cur[lo - 1];
+    for (std::size_t j = lo; j <= hi; ++j) {
+      const std::size_t sub = prev[j - 1] + (lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub, over});
+      row_min = std::min(row_min, cur[j]);
     }
+    if (hi < b.size()) cur[hi + 1] = over;
+    *cells += hi - lo + 1;
+    // every later row is at least this row's minimum
+    if (row_min > k) return over;
     std::swap(prev, cur);
   }
-  return prev[b.size()];
+  return std::min(prev[b.size()], over);
 }
 
 }  // namespace
 
-std::string closest_match(std::string_view name, const std::vector<std::string>& candidates) {
+std::string closest_match(std::string_view name, const std::vector<std::string>& candidates,
+                          std::size_t* work) {
+  std::size_t cells = 0;
   std::string best;
-  std::size_t best_d = std::string::npos;
-  for (const auto& c : candidates) {
-    const std::size_t d = edit_distance(name, c);
-    if (d < best_d) {
-      best_d = d;
-      best = c;
+  if (name.size() <= kMaxSuggestedLength) {
+    // no candidate is accepted beyond a third of the longer name: the band of the search
+    std::size_t longest = name.size();
+    for (const auto& c : candidates)
+      if (c.size() <= kMaxSuggestedLength) longest = std::max(longest, c.size());
+    const std::size_t cutoff = std::max<std::size_t>(1, longest / 3);
+    std::size_t best_d = cutoff + 1;
+    for (const auto& c : candidates) {
+      if (c.size() > kMaxSuggestedLength || best_d == 0) continue;
+      // the first of equally close candidates wins: a later one must be strictly closer
+      const std::size_t d = bounded_edit_distance(name, c, best_d - 1, &cells);
+      if (d < best_d) {
+        best_d = d;
+        best = c;
+      }
     }
+    // close enough: at most a third of the longer name, and at least one letter
+    const std::size_t limit = std::max<std::size_t>(1, std::max(name.size(), best.size()) / 3);
+    if (best.empty() || best_d > limit) best.clear();
   }
-  // close enough: at most a third of the longer name, and at least one letter
-  const std::size_t limit = std::max<std::size_t>(1, std::max(name.size(), best.size()) / 3);
-  return best_d <= limit ? best : std::string();
+  if (work != nullptr) *work = cells;
+  return best;
 }
 
 std::string suggestion(std::string_view name, const std::vector<std::string>& candidates) {
@@ -175,14 +207,20 @@ MapReader::MapReader(Diagnostics& diag, YAML::Node node, std::string path)
     return;
   }
   valid_ = true;
-  // duplicate keys: YAML forbids them, yaml-cpp keeps both
-  std::vector<std::string> seen;
+  // duplicate keys: YAML forbids them, yaml-cpp keeps both (and finds the first)
+  std::unordered_set<std::string> seen;
   for (const auto& kv : node_) {
     const std::string k = kv.first.Scalar();
-    if (std::find(seen.begin(), seen.end(), k) != seen.end())
+    if (!seen.insert(k).second)
       diag_.error(kv.first.Mark(), key_path(k), "duplicate key");
-    seen.push_back(k);
+    else if (kv.first.IsScalar())
+      children_.emplace(k, kv.second);
   }
+}
+
+YAML::Node MapReader::child(std::string_view key) const {
+  const auto it = valid_ ? children_.find(std::string(key)) : children_.end();
+  return it != children_.end() ? it->second : YAML::Node(YAML::NodeType::Undefined);
 }
 
 std::string MapReader::key_path(std::string_view key) const {
@@ -191,8 +229,9 @@ std::string MapReader::key_path(std::string_view key) const {
 }
 
 bool MapReader::has(std::string_view key) {
-  known_.emplace_back(key);
-  return valid_ && node_[std::string(key)].IsDefined() && !node_[std::string(key)].IsNull();
+  if (known_set_.emplace(key).second) known_.emplace_back(key);
+  const YAML::Node n = child(key);
+  return n.IsDefined() && !n.IsNull();
 }
 
 YAML::Node MapReader::get(std::string_view key, Need need, std::string_view hint) {
@@ -204,11 +243,11 @@ YAML::Node MapReader::get(std::string_view key, Need need, std::string_view hint
                                : fmt::format("required key is missing ({})", hint));
     return YAML::Node(YAML::NodeType::Undefined);
   }
-  return node_[std::string(key)];
+  return child(key);
 }
 
 void MapReader::error(std::string_view key, std::string message) {
-  const YAML::Node n = valid_ ? node_[std::string(key)] : YAML::Node();
+  const YAML::Node n = child(key);
   diag_.error(n.IsDefined() ? n.Mark() : node_.Mark(), key_path(key), std::move(message));
 }
 
@@ -301,7 +340,7 @@ void MapReader::finish() {
   if (!valid_) return;
   for (const auto& kv : node_) {
     const std::string k = kv.first.Scalar();
-    if (std::find(known_.begin(), known_.end(), k) == known_.end()) {
+    if (known_set_.count(k) == 0) {
       std::vector<std::string> options = known_;
       std::sort(options.begin(), options.end());
       options.erase(std::unique(options.begin(), options.end()), options.end());

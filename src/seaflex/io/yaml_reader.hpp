@@ -10,6 +10,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "seaflex/core/errors.hpp"
@@ -33,8 +35,14 @@ class Diagnostics {
   std::vector<Diagnostic> list_;
 };
 
-/// The closest of the candidates to name by edit distance, or "" when none is close.
-std::string closest_match(std::string_view name, const std::vector<std::string>& candidates);
+/// Names longer than this (characters) get no suggestion, and no candidate longer than this
+/// is suggested: the search then costs at most candidates x 256 x 171 character comparisons.
+inline constexpr std::size_t kMaxSuggestedLength = 256;
+/// The closest of the candidates to name by (case-insensitive) edit distance, the first of
+/// equally close ones, or "" when none is within a third of the longer name (at least 1).
+/// *work, when given, receives the number of edit-distance cells computed.
+std::string closest_match(std::string_view name, const std::vector<std::string>& candidates,
+                          std::size_t* work = nullptr);
 /// "did you mean 'x'?" or "expected one of: a, b, c".
 std::string suggestion(std::string_view name, const std::vector<std::string>& candidates);
 
@@ -98,6 +106,11 @@ class MapReader {
   std::string path_;
   bool valid_ = false;
   std::vector<std::string> known_;
+  // lookups in O(1): yaml-cpp searches a map's keys one by one, which made reading a map
+  // of N bodies O(N^2)
+  std::unordered_set<std::string> known_set_;
+  std::unordered_map<std::string, YAML::Node> children_;  // the first value of each key
+  YAML::Node child(std::string_view key) const;
 };
 
 /// A scalar as a finite double; nullopt (and an error) otherwise.

@@ -11,6 +11,7 @@ Body& System::add_body(std::unique_ptr<Body> body) {
   if (finalized_) throw std::logic_error("System: add_body after finalize");
   if (find_body(body->name()))
     throw std::invalid_argument("System: duplicate body " + body->name());
+  body_index_.emplace(body->name(), body.get());
   bodies_.push_back(std::move(body));
   for (auto& c : bodies_.back()->internal_constraints()) constraints_.push_back(std::move(c));
   return *bodies_.back();
@@ -27,9 +28,8 @@ void System::add_constraint(std::unique_ptr<Constraint> constraint) {
 }
 
 const Body* System::find_body(std::string_view name) const {
-  for (const auto& b : bodies_)
-    if (b->name() == name) return b.get();
-  return nullptr;
+  const auto it = body_index_.find(std::string(name));
+  return it != body_index_.end() ? it->second : nullptr;
 }
 
 void System::finalize() {
@@ -165,9 +165,14 @@ void System::accept_step(const State& state) {
 }
 
 std::string System::coordinate_name(Index i) const {
-  for (const auto& b : bodies_)
-    if (i >= b->offset() && i < b->offset() + b->num_coordinates())
-      return b->coordinate_name(i - b->offset());
+  // bodies are numbered in order: the last one that starts at or before i (binary search)
+  const auto it = std::upper_bound(bodies_.begin(), bodies_.end(), i,
+                                   [](Index c, const auto& b) { return c < b->offset(); });
+  if (it != bodies_.begin()) {
+    const Body& b = **std::prev(it);
+    if (i >= b.offset() && i < b.offset() + b.num_coordinates())
+      return b.coordinate_name(i - b.offset());
+  }
   return fmt::format("q[{}]", i);
 }
 
@@ -177,17 +182,24 @@ double System::step_scale(const State& state, const VecX& dq) const {
   return scale;
 }
 
+// the constraint that owns a row: the last one that starts at or before it (binary search)
+std::size_t System::constraint_index(Index row) const {
+  const auto it = std::upper_bound(row_offset_.begin(), row_offset_.end(), row);
+  if (it == row_offset_.begin()) return constraints_.size();
+  const auto k = static_cast<std::size_t>(std::prev(it) - row_offset_.begin());
+  return k < constraints_.size() && row < row_offset_[k] + constraints_[k]->num_rows()
+             ? k
+             : constraints_.size();
+}
+
 const Constraint* System::constraint_at_row(Index row) const {
-  for (std::size_t k = 0; k < constraints_.size(); ++k)
-    if (row >= row_offset_[k] && row < row_offset_[k] + constraints_[k]->num_rows())
-      return constraints_[k].get();
-  return nullptr;
+  const std::size_t k = constraint_index(row);
+  return k < constraints_.size() ? constraints_[k].get() : nullptr;
 }
 
 std::string System::constraint_name(Index row) const {
-  for (std::size_t k = 0; k < constraints_.size(); ++k)
-    if (row >= row_offset_[k] && row < row_offset_[k] + constraints_[k]->num_rows())
-      return constraints_[k]->row_name(row - row_offset_[k]);
+  const std::size_t k = constraint_index(row);
+  if (k < constraints_.size()) return constraints_[k]->row_name(row - row_offset_[k]);
   return fmt::format("constraint row {}", row);
 }
 

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "seaflex/model/body.hpp"
@@ -63,12 +65,14 @@ class System : public Dae {
 
  private:
   std::vector<std::unique_ptr<Body>> bodies_;
+  std::unordered_map<std::string, const Body*> body_index_;  // find_body in O(1)
   std::vector<std::unique_ptr<Force>> forces_;
   std::vector<std::unique_ptr<Constraint>> constraints_;
   bool finalized_ = false;
   Index n_ = 0;
   Index m_ = 0;
   std::vector<Index> row_offset_;  // constraint -> first row
+  std::size_t constraint_index(Index row) const;
   std::vector<std::vector<Index>> constraint_dofs_;
   std::vector<math::BlockId> cq_block_, cqt_block_, hess_block_;
   math::SparseBlockAssembler pattern_;
