@@ -1,0 +1,117 @@
+"""Scale (issue 22): model checks whose cost used to grow quadratically answer within a
+memory limit and a generous time limit. The limits are bounds against a blow-up, not timings:
+each case takes well under a tenth of its time limit on the 2-core development machine
+(docs/performance.md, "Model check at scale").
+
+usage: test_scale.py SEAFLEX_EXECUTABLE SOURCE_DIR"""
+import resource
+import subprocess
+import sys
+import unittest
+
+from cli_support import SEAFLEX, TempDirCase
+
+GIB = 1 << 30
+
+
+def run_limited(args, memory_bytes, timeout):
+    """seaflex with its address space limited to memory_bytes (RLIMIT_AS) and a wall-clock
+    timeout in seconds (subprocess.TimeoutExpired fails the test)."""
+
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
+
+    return subprocess.run([SEAFLEX, *args], capture_output=True, text=True, timeout=timeout,
+                          preexec_fn=limit)
+
+
+def chain_model(n, redundant_at=None):
+    """n rigid links of 1 m hanging on ball joints j0 .. j{n-1} from ground; with
+    redundant_at = i, a joint 'extra' that repeats joint j{i}."""
+    lines = ["title: chain", "environment: {gravity: 9.81}", "bodies:"]
+    for i in range(n):
+        lines.append(f"  b{i}: {{type: rigid_body, mass: 10, inertia: [1, 1, 0.1], "
+                     f"position: [0, 0, {-(i + 0.5)}]}}")
+    lines.append("joints:")
+    lines.append("  - {name: j0, type: ball, from: {body: ground, position: [0, 0, 0]}, "
+                 "to: {body: b0, position: [0, 0, 0.5]}}")
+    for i in range(1, n):
+        lines.append(f"  - {{name: j{i}, type: ball, from: {{body: b{i - 1}, position: [0, 0, "
+                     f"-0.5]}}, to: {{body: b{i}, position: [0, 0, 0.5]}}}}")
+    if redundant_at is not None:
+        i = redundant_at
+        lines.append(f"  - {{name: extra, type: ball, from: {{body: b{i - 1}, position: [0, 0, "
+                     f"-0.5]}}, to: {{body: b{i}, position: [0, 0, 0.5]}}}}")
+    lines.append("dynamics: {integrator: rk4, time_step: 1e-3, duration: 0.01}")
+    return "\n".join(lines) + "\n"
+
+
+class ModelCheckAtScale(TempDirCase):
+    def test_redundant_joint_in_a_2000_body_chain(self):
+        # before: 69 s and 838 MB (Eigen's SparseQR without row ordering); now about 0.3 s
+        # and 90 MB. The chain has 14,000 coordinates and 8,001 constraint rows.
+        path = self.model(chain_model(2000, redundant_at=1000))
+        r = run_limited(["check", path], GIB, timeout=20)
+        self.assertEqual(r.returncode, 2, r.stderr[-2000:])
+        self.assertEqual(
+            r.stderr.strip().splitlines(),
+            [f"{path}:4005:5: joints[2000]: 'extra' over-constrains the assembly: its condition "
+             "'x' repeats what 'j1000' already imposes; remove it or use a joint with fewer "
+             "conditions (a closed loop of parallel revolute joints, such as a four-bar, needs a "
+             "ball and a universal joint in place of two of its revolutes)"])
+
+    def test_2000_body_chain_without_the_extra_joint_passes(self):
+        path = self.model(chain_model(2000))
+        r = run_limited(["check", path], GIB, timeout=20)
+        self.assertEqual(r.returncode, 0, r.stderr[-2000:])
+        self.assertIn("model OK", r.stdout)
+
+    def test_20000_free_bodies(self):
+        # before: 25 s (yaml-cpp's linear key search and a linear body search per body);
+        # now about 1.3 s and 260 MB
+        lines = ["title: free", "environment: {gravity: 9.81}", "bodies:"]
+        for i in range(20000):
+            lines.append(f"  b{i}: {{type: rigid_body, mass: 10, inertia: [1, 1, 0.1], "
+                         f"position: [{i}, 0, 0]}}")
+        lines.append("dynamics: {integrator: rk4, time_step: 1e-3, duration: 0.01}")
+        path = self.model("\n".join(lines) + "\n")
+        r = run_limited(["check", path], GIB, timeout=20)
+        self.assertEqual(r.returncode, 0, r.stderr[-2000:])
+        self.assertIn("model OK", r.stdout)
+
+
+class DidYouMeanAtScale(TempDirCase):
+    def test_long_misspelt_body_name(self):
+        # before: 53 s for the edit distance of the two 100,000-letter names; names over
+        # 256 letters are not searched for a suggestion
+        name = "r" * 100000
+        bad = "r" * 99999 + "s"
+        path = self.model(
+            "bodies:\n"
+            f"  ? {name}\n"
+            "  : {type: rigid_body, mass: 10, inertia: [1, 1, 1], position: [0, 0, 0]}\n"
+            "supports:\n"
+            f"  - {{body: {bad}, type: fixed, fix: [x]}}\n"
+            "dynamics: {integrator: rk4, time_step: 1e-3, duration: 0.01}\n")
+        r = run_limited(["check", path], GIB, timeout=5)
+        self.assertEqual(r.returncode, 2)
+        self.assertEqual(r.stderr.strip().splitlines(),
+                         [f"{path}:5:12: supports[0].body: no body named '{bad}'; "
+                          f"expected one of: {name}"])
+
+    def test_normal_misspelt_name_keeps_its_suggestion(self):
+        path = self.model(
+            "bodies:\n"
+            "  buoy: {type: rigid_body, mass: 10, inertia: [1, 1, 1], position: [0, 0, 0]}\n"
+            "supports:\n"
+            "  - {body: buoi, type: fixed, fix: [x]}\n"
+            "dynamics: {integrator: rk4, time_step: 1e-3, duration: 0.01}\n")
+        r = run_limited(["check", path], GIB, timeout=5)
+        self.assertEqual(r.returncode, 2)
+        self.assertEqual(r.stderr.strip().splitlines(),
+                         [f"{path}:4:12: supports[0].body: no body named 'buoi'; "
+                          "did you mean 'buoy'?"])
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
