@@ -4,12 +4,13 @@ each case takes well under a tenth of its time limit on the 2-core development m
 (docs/performance.md, "Model check at scale").
 
 usage: test_scale.py SEAFLEX_EXECUTABLE SOURCE_DIR"""
+import os
 import resource
 import subprocess
 import sys
 import unittest
 
-from cli_support import SEAFLEX, TempDirCase
+from cli_support import SEAFLEX, SRC, TempDirCase
 
 GIB = 1 << 30
 
@@ -76,6 +77,27 @@ class ModelCheckAtScale(TempDirCase):
         lines.append("dynamics: {integrator: rk4, time_step: 1e-3, duration: 0.01}")
         path = self.model("\n".join(lines) + "\n")
         r = run_limited(["check", path], GIB, timeout=20)
+        self.assertEqual(r.returncode, 0, r.stderr[-2000:])
+        self.assertIn("model OK", r.stdout)
+
+
+class RadiationFitAtScale(TempDirCase):
+    def test_state_space_fit_of_a_2000_s_memory_at_1_ms(self):
+        # before: over 30 s and 565 MB (2,000,001 kernel samples of 6 x 6); now the kernel is
+        # sampled at most 2 x 4096 times: about 0.8 s and 20 MB
+        wamit = os.path.abspath(os.path.join(SRC, "tests/data/wamit/sphere/sphere"))
+        path = self.model(
+            "environment: {gravity: 9.81, water: {density: 1025, depth: 50}}\n"
+            "bodies:\n"
+            "  sphere: {type: rigid_body, mass: 268349.5, inertia: [1.0e6, 1.0e6, 1.0e6], "
+            "position: [0, 0, -2]}\n"
+            "hydrodynamics:\n"
+            "  sphere:\n"
+            f"    bem: {{wamit: {wamit}, radiation: state_space, memory: 2000, "
+            "kernel_time_step: 0.001, displaced_volume: 261.799, "
+            "still_water_position: [0, 0, -2]}\n"
+            "dynamics: {integrator: rk4, time_step: 0.02, duration: 0.1}\n")
+        r = run_limited(["check", path], GIB, timeout=30)
         self.assertEqual(r.returncode, 0, r.stderr[-2000:])
         self.assertIn("model OK", r.stdout)
 

@@ -13,6 +13,8 @@ namespace seaflex::hydro {
 namespace {
 
 constexpr int kMaxHankel = 120;
+// most samples in the least-squares fit of the residues (see the header)
+constexpr Eigen::Index kMaxResidueRows = 8192;
 
 struct Pole {
   double sigma;  // real part (1/s)
@@ -92,29 +94,52 @@ ImpulseResponseModel fit_impulse_response(const std::vector<double>& y, double d
     poles.push_back(Pole{s.real(), real ? 0.0 : s.imag()});
   }
 
-  // residues by least squares on all samples: basis e^{st}, or e^{sigma t} (sin, cos)
+  // residues by least squares on all samples (every fit_stride-th beyond kMaxResidueRows:
+  // the memory stays bounded for any kernel length): basis e^{st}, or e^{sigma t} (sin, cos)
   Eigen::Index n_basis = 0;
   for (const auto& p : poles) n_basis += p.omega == 0.0 ? 1 : 2;
-  Eigen::MatrixXd basis(n_samples, n_basis);
-  Eigen::VectorXd target(n_samples);
-  for (Eigen::Index k = 0; k < n_samples; ++k) {
+  auto basis_row = [&](Eigen::Index k, auto&& row) {
     const double t = dt * static_cast<double>(k);
-    target(k) = y[static_cast<std::size_t>(k)];
     Eigen::Index col = 0;
     for (const auto& p : poles) {
       const double e = std::exp(p.sigma * t);
       if (p.omega == 0.0) {
-        basis(k, col++) = e;
+        row(col++) = e;
       } else {
-        basis(k, col++) = e * std::sin(p.omega * t);
-        basis(k, col++) = e * std::cos(p.omega * t);
+        row(col++) = e * std::sin(p.omega * t);
+        row(col++) = e * std::cos(p.omega * t);
       }
     }
+  };
+  const Eigen::Index fit_stride = (n_samples + kMaxResidueRows - 1) / kMaxResidueRows;
+  const Eigen::Index n_rows = (n_samples + fit_stride - 1) / fit_stride;
+  Eigen::MatrixXd basis(n_rows, n_basis);
+  Eigen::VectorXd target(n_rows);
+  for (Eigen::Index r = 0; r < n_rows; ++r) {
+    target(r) = y[static_cast<std::size_t>(r * fit_stride)];
+    basis_row(r * fit_stride, basis.row(r));
   }
   const Eigen::VectorXd residues =
       n_basis > 0 ? Eigen::VectorXd(basis.colPivHouseholderQr().solve(target)) : Eigen::VectorXd();
-  model.fit_error =
-      (n_basis > 0 ? (basis * residues - target).norm() : target.norm()) / target.norm();
+  if (fit_stride == 1) {
+    model.fit_error =
+        (n_basis > 0 ? (basis * residues - target).norm() : target.norm()) / target.norm();
+  } else {
+    // the error over every sample, one row at a time
+    double err2 = 0.0, norm2 = 0.0;
+    Eigen::RowVectorXd row(n_basis);
+    for (Eigen::Index k = 0; k < n_samples; ++k) {
+      const double yk = y[static_cast<std::size_t>(k)];
+      double fit = 0.0;
+      if (n_basis > 0) {
+        basis_row(k, row);
+        fit = row.dot(residues);
+      }
+      err2 += (fit - yk) * (fit - yk);
+      norm2 += yk * yk;
+    }
+    model.fit_error = std::sqrt(err2 / norm2);
+  }
 
   model.a = Eigen::MatrixXd::Zero(n_basis, n_basis);
   model.b = Eigen::VectorXd::Zero(n_basis);

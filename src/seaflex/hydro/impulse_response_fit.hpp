@@ -14,8 +14,10 @@
 // - the realization is real and block diagonal: a real pole s gives A = [s], b = [1],
 //   c = [r]; a pair sigma +- i w gives A = [sigma w; -w sigma], b = [0; 1],
 //   c = [r_sin r_cos], whose impulse response is e^{sigma t} (r_sin sin wt + r_cos cos wt).
-// The Hankel matrix is at most kMaxHankel x kMaxHankel: the samples are decimated by a
-// stride when the response (to 1e-4 of its peak) is longer than 2 kMaxHankel samples.
+// The Hankel matrix is at most kMaxHankel x kMaxHankel (120): the samples are decimated by
+// a stride when the response (to 1e-4 of its peak) is longer than 2 kMaxHankel samples.
+// The residues are fitted to at most kMaxResidueRows (8192) samples, every s-th one when
+// there are more (fit_error still covers all): time O(samples), memory O(8192 x order).
 #pragma once
 
 #include <Eigen/Dense>

@@ -110,6 +110,31 @@ StateSpaceRadiation::StateSpaceRadiation(const RetardationKernel& kernel, Option
   reset(0.0, Vec6::Zero());
 }
 
+StateSpaceRadiation StateSpaceRadiation::from_damping(const HydroDatabase& db, double kernel_dt,
+                                                      double memory, Options options) {
+  const auto max_samples = static_cast<double>(kMaxKernelSamples);
+  if (!(memory / kernel_dt > max_samples))
+    return StateSpaceRadiation(RetardationKernel::from_damping(db, kernel_dt, memory), options);
+  // first pass: where the kernel ends (the last sample above 1e-4 of each entry's peak)
+  const double coarse_dt = memory / (max_samples - 1.0);
+  const RetardationKernel coarse = RetardationKernel::from_damping(db, coarse_dt, memory);
+  const auto& samples = coarse.samples();
+  Mat6 peak = Mat6::Zero();
+  for (const auto& k : samples) peak = peak.cwiseMax(k.cwiseAbs());
+  // (only the entries that will be fitted: see Options::significance)
+  const double largest = peak.maxCoeff();
+  const Eigen::Array<bool, 6, 6> fitted = peak.array() > options.significance * largest;
+  std::size_t last = 1;
+  for (std::size_t k = 0; k < samples.size(); ++k)
+    if ((fitted && (samples[k].cwiseAbs().array() > 1e-4 * peak.array())).any()) last = k;
+  // one coarse sample more (the kernel may still be above the threshold until the next one)
+  // and a fifth more, as fit_impulse_response does
+  const double length = std::min(memory, coarse_dt * static_cast<double>(last + 1) * 1.2);
+  const double dt = std::max(kernel_dt, length / (max_samples - 1.0));
+  return StateSpaceRadiation(RetardationKernel::from_damping(db, dt, std::max(length, dt)),
+                             options);
+}
+
 void StateSpaceRadiation::reset(double t0, const Vec6& v0) {
   x_.setZero();
   t_last_ = t0;

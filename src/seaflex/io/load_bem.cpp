@@ -106,15 +106,16 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
     }
   }
   if (radiation != "none") {
-    const hydro::RetardationKernel kernel =
-        hydro::RetardationKernel::from_damping(*db, kdt, memory);
     const std::string name = fmt::format("{}.radiation", body.name());
     if (radiation == "convolution")
       ctx.system.add_force(std::make_unique<RadiationForce>(
-          name, body, set.reference, hydro::ConvolutionRadiation(kernel, memory)));
+          name, body, set.reference,
+          hydro::ConvolutionRadiation(hydro::RetardationKernel::from_damping(*db, kdt, memory),
+                                      memory)));
     else
       ctx.system.add_force(std::make_unique<RadiationForce>(
-          name, body, set.reference, hydro::StateSpaceRadiation(kernel, {})));
+          name, body, set.reference,
+          hydro::StateSpaceRadiation::from_damping(*db, kdt, memory, {})));
   }
 }
 
