@@ -4,6 +4,8 @@ each case takes well under a tenth of its time limit on the 2-core development m
 (docs/performance.md, "Model check at scale").
 
 usage: test_scale.py SEAFLEX_EXECUTABLE SOURCE_DIR"""
+import csv
+import math
 import os
 import resource
 import subprocess
@@ -79,6 +81,45 @@ class ModelCheckAtScale(TempDirCase):
         r = run_limited(["check", path], GIB, timeout=20)
         self.assertEqual(r.returncode, 0, r.stderr[-2000:])
         self.assertIn("model OK", r.stdout)
+
+
+class RiserStaticsAtScale(TempDirCase):
+    def test_10000_element_riser(self):
+        # bench/riser/riser_n1000.yaml with 10,000 elements of 3 cm and no current: statics
+        # stopped at load factor 1.2e-4 before ("a mode that the loads drive": a
+        # regularization of 1e-14 x the largest diagonal, 12 EI / l^3 ~ 2e15, outweighed the
+        # riser's string stiffness); now about 3 s and 130 MB
+        with open(os.path.join(SRC, "bench/riser/riser_n1000.yaml")) as f:
+            text = f.read()
+        text = text.replace("elements: 1000\n", "elements: 10000\n")
+        text = text.replace("  current: {speed: 3.0, direction: 0}\n", "")
+        self.assertIn("elements: 10000", text)
+        self.assertNotIn("current:", text)
+        path = self.model(text)
+        out = os.path.join(self.dir, "out")
+        r = run_limited(["statics", path, "-o", out], GIB, timeout=60)
+        self.assertEqual(r.returncode, 0, r.stderr[-2000:])
+        with open(os.path.join(out, "statics.riser.along.csv")) as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual(len(rows), 30001)  # 3 stations per element and the end
+        bottom, top = rows[0], rows[-1]
+        # the top node carries the applied 6.826837e6 N alone (its x and y are held; no
+        # current): the effective tension there equals it. Tolerance 1e-5 of it (68 N):
+        # Newton stops at its round-off floor, a force residual of about 10 N with 3 cm
+        # elements (1e-16 x 300 m x 12 EI / l^3); measured 4.8 N off
+        force = 6.826837e6
+        self.assertLess(abs(float(top["tension_effective"]) - force), 1e-5 * force)
+        # bottom: the applied force less the weight, plus the buoyancy of the submerged
+        # length: the stretched riser's top, z_top = 0.024 m, is above the water, and
+        # buoyancy acts per unstretched length, so the 300 m riser is submerged over
+        # 300 - z_top (docs/verification.md). Tolerance 1e-5 of 2e6 N (20 N)
+        area = math.pi / 4 * (0.7 ** 2 - 0.4 ** 2)
+        outer = math.pi / 4 * 0.7 ** 2
+        z_top = float(top["z"])
+        self.assertGreater(z_top, 0.02)  # it stretched: about 8e-5 x 300 m
+        self.assertLess(z_top, 0.03)
+        expected = force - 7850 * area * 9.81 * 300 + 1025 * outer * 9.81 * (300 - z_top)
+        self.assertLess(abs(float(bottom["tension_effective"]) - expected), 1e-5 * 2e6)
 
 
 class RadiationFitAtScale(TempDirCase):

@@ -82,11 +82,15 @@ class NewtonStatics {
       if (!res.finite) return false;
       if (res.force <= s_.tolerance && res.constraint <= c_tol) return true;
       // Levenberg-Marquardt-style regularization of the Newton matrix only (the residual,
-      // hence the equilibrium, is untouched): K_ii += eps = 1e-14 max |K_jj| + 1e-6 F / L
-      // (F the largest force, L the model's size): below 1e-6 of any stiffness whose
-      // deflection under the loads is smaller than the model, and large enough that the
-      // round-off residual (1e-16 F) moves a free mode by no more than 1e-10 L. (A scaling
-      // by K_ii would stiffen bending modes, whose coordinates also carry EA/l.)
+      // hence the equilibrium, is untouched): K_ii += eps = 1e-6 F / L (F the largest
+      // force, L the model's size): below 1e-6 of any stiffness whose deflection under the
+      // loads is smaller than the model, and large enough that the round-off residual
+      // (1e-16 F) moves a free mode by no more than 1e-10 L. (A scaling by K_ii would
+      // stiffen bending modes, whose coordinates also carry EA/l.) No term in max |K_jj|:
+      // a beam's largest diagonal is 12 EI / l^3, which grows as N^3 with the number of
+      // elements; 1e-14 of it, added to every node, outweighed the stiffness of a riser's
+      // tensioned-string mode per node (~ T pi^2 / (L N)) at 10,000 elements of 3 cm, and
+      // statics then stopped as "a mode that the loads drive" (issue 22).
       // A mode without stiffness that no force drives (a free spin about a hanging line, a
       // rigid body about a beam's axis, which carries no torsion) then does not move,
       // instead of taking a step of round-off over a round-off pivot.
@@ -156,11 +160,7 @@ class NewtonStatics {
   // K_ii += eps on the coordinate block (see solve)
   void regularize() {
     SpMat& K = eval_.kkt.matrix();
-    double largest = 1.0;
-    for (Index c = 0; c < n_; ++c)
-      for (SpMat::InnerIterator it(K, c); it; ++it)
-        if (it.row() == c) largest = std::max(largest, std::abs(it.value()));
-    eps_ = 1e-14 * largest + 1e-6 * force_scale_ / std::max(1.0, q_scale_);
+    eps_ = 1e-6 * force_scale_ / std::max(1.0, q_scale_);
     for (Index c = 0; c < n_; ++c)
       for (SpMat::InnerIterator it(K, c); it; ++it)
         if (it.row() == c) it.valueRef() += eps_;
