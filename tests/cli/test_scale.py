@@ -143,6 +143,32 @@ class RadiationFitAtScale(TempDirCase):
         self.assertIn("model OK", r.stdout)
 
 
+    def test_convolution_with_a_2000_s_memory_at_1_ms_is_refused(self):
+        # the convolution keeps every kernel sample: 2,000,001 of them would take 576 MB and
+        # minutes to compute; the loader refuses more than 100,000 (exit 2, the key named)
+        wamit = os.path.abspath(os.path.join(SRC, "tests/data/wamit/sphere/sphere"))
+        path = self.model(
+            "environment: {gravity: 9.81, water: {density: 1025, depth: 50}}\n"
+            "bodies:\n"
+            "  sphere: {type: rigid_body, mass: 268349.5, inertia: [1.0e6, 1.0e6, 1.0e6], "
+            "position: [0, 0, -2]}\n"
+            "hydrodynamics:\n"
+            "  sphere:\n"
+            "    bem:\n"
+            f"      wamit: {wamit}\n"
+            "      radiation: convolution\n"
+            "      memory: 2000\n"
+            "      kernel_time_step: 0.001\n"
+            "dynamics: {integrator: rk4, time_step: 0.02, duration: 0.1}\n")
+        r = run_limited(["check", path], GIB, timeout=30)
+        self.assertEqual(r.returncode, 2, r.stderr[-2000:])
+        self.assertEqual(r.stderr.strip().splitlines(),
+                         [f"{path}:10:25: hydrodynamics.sphere.bem.kernel_time_step: memory / "
+                          "kernel_time_step = 2e+06 kernel samples, more than the limit of "
+                          "100000 for radiation: convolution; use a kernel_time_step of at "
+                          "least 0.02 s, a shorter memory, or radiation: state_space"])
+
+
 class DidYouMeanAtScale(TempDirCase):
     def test_long_misspelt_body_name(self):
         # before: 53 s for the edit distance of the two 100,000-letter names; names over

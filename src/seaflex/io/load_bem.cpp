@@ -39,6 +39,18 @@ void load_bem(MapReader& b, const RigidBody& body, HydroMatrixSet& set, LoadCont
             fmt::format("must be at least kernel_time_step ({} s), got {} s", kdt, memory));
     return;
   }
+  // a convolution keeps every sample of K (6 x 6 doubles each) and computes each from the
+  // whole damping table: a bound on both (the state-space fit samples K a bounded number of
+  // times whatever the ratio, see StateSpaceRadiation::from_damping)
+  constexpr double kMaxConvolutionSamples = 100000;
+  if (radiation == "convolution" && memory / kdt > kMaxConvolutionSamples) {
+    b.error("kernel_time_step",
+            fmt::format("memory / kernel_time_step = {:.6g} kernel samples, more than the limit "
+                        "of {:g} for radiation: convolution; use a kernel_time_step of at least "
+                        "{:.3g} s, a shorter memory, or radiation: state_space",
+                        memory / kdt, kMaxConvolutionSamples, memory / kMaxConvolutionSamples));
+    return;
+  }
   if (!file) return;
   std::filesystem::path stem(*file);
   if (stem.is_relative()) stem = std::filesystem::path(ctx.diag.file()).parent_path() / stem;
