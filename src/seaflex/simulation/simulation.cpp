@@ -37,6 +37,8 @@ Simulation::Simulation(Dae& dae, ChannelList channels, Integrator& integrator,
       throw std::invalid_argument("Simulation: min_time_step exceeds the time step");
     levels_ = std::clamp(static_cast<int>(std::ceil(std::log2(settings_.time_step / h_min) - 1e-9)),
                          0, 20);
+    if (!(settings_.error_tolerance > 0.0))
+      throw std::invalid_argument("Simulation: error_tolerance must be positive");
   }
   row_.resize(channels_.size());
 }
@@ -46,6 +48,24 @@ void Simulation::record(State& state) {
   for (std::size_t i = 0; i < channels_.size(); ++i) row_[i] = channels_[i].value(state);
   for (Recorder* r : recorders_) r->record(state, row_);
   ++rows_;
+}
+
+double Simulation::error_norm(const State& state, Index& worst) const {
+  // Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4, eq. (4.10), max norm, with
+  // Atol = Rtol = error_tolerance
+  const VecX& e = integrator_.local_error();
+  double err = 0.0;
+  worst = 0;
+  for (Index i = 0; i < e.size(); ++i) {
+    const double sc = settings_.error_tolerance *
+                      (1.0 + std::max(std::abs(saved_.q[i]), std::abs(state.q[i])));
+    const double r = std::abs(e[i]) / sc;
+    if (!(r <= err)) {  // NaN counts as the worst
+      err = r;
+      worst = i;
+    }
+  }
+  return err;
 }
 
 void SimulationPosition::save(CheckpointWriter& out) const {
@@ -102,6 +122,11 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
   const long total = nominal * per_step, out_ticks = every_ * per_step;
   const double tick = settings_.time_step / static_cast<double>(per_step);
   const bool adaptive = settings_.step_control == StepControl::kAdaptive;
+  // adaptive: the order p of the integrator's local error estimate (0: none, only failed
+  // steps are retried)
+  const int order = adaptive ? integrator_.local_error_order() : 0;
+  // largest step-size factor f = 0.9 err^(-1/p) from the last accepted step
+  double factor = 0.0;
   SimulationReport& report = pos.report;
   rows_ = pos.rows;
   const double scale = pos.scale;  // for the divergence test
@@ -151,11 +176,34 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
               wh / h, wh / h / (2.0 * std::numbers::pi), wh, 2.0 * std::sqrt(2.0) * h / wh);
         }
       }
+      // the step's accuracy: the local error estimate against the tolerance (file header)
+      int shrink = 1;  // halvings for a retry
+      if (failure.empty() && order > 0) {
+        Index worst = 0;
+        const double err = error_norm(state, worst);
+        // Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4, eq. (4.13): fac = 0.9
+        factor = err > 0.0 ? 0.9 * std::pow(err, -1.0 / order) : 1e300;
+        if (!(err <= 1.0)) {
+          shrink = std::isfinite(factor) && factor > 0.0
+                       ? std::clamp(static_cast<int>(std::ceil(-std::log2(factor))), 1, 4)
+                       : 4;
+          failure = fmt::format(
+              "t = {:.6g} s: the estimated local error of the step, {:.3g} at {}, exceeds "
+              "error_tolerance x (1 + |q|) = {:.3g} (error_tolerance {:g}): the motion changes "
+              "too fast for the step (an impact, a line going taut); lower min_time_step or raise "
+              "error_tolerance",
+              t_new, integrator_.local_error()[worst], dae_.coordinate_name(worst),
+              settings_.error_tolerance *
+                  (1.0 + std::max(std::abs(saved_.q[worst]), std::abs(state.q[worst]))),
+              settings_.error_tolerance);
+        }
+      }
       if (!failure.empty()) {
-        if (adaptive && level < levels_) {  // retry from the saved state with h / 2
+        if (adaptive && level < levels_) {  // retry from the saved state with h / 2^shrink
+          if (step.ok) integrator_.reject_step();  // the integrator took the step: undo it
           state = saved_;
           growth.reset();
-          ++level;
+          level = std::min(levels_, level + shrink);
           successes = 0;
           ++report.rejected_steps;
           continue;
@@ -170,8 +218,10 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
       report.min_step = std::min(report.min_step, h);
       report.max_constraint_violation = std::max(report.max_constraint_violation, step.residual);
       dae_.accept_step(state);
-      // grow back once four steps passed and the doubled step stays on its own grid
-      if (level > 0 && ++successes >= 4 && ticks % (step_ticks * 2) == 0) {
+      // grow back once four steps passed, the error estimate allows a doubled step and the
+      // doubled step stays on its own grid
+      if (level > 0 && ++successes >= 4 && (order == 0 || factor >= 2.0) &&
+          ticks % (step_ticks * 2) == 0) {
         --level;
         successes = 0;
       }
