@@ -86,7 +86,8 @@ class Watch : public Integrator {
   // lowest z; the largest tension
   double apex() const {
     for (std::size_t i = 1; i < rows.size(); ++i)
-      if (rows[i][1] > 0.0 && rows[i][0] > -10.0) return rows[i][0] + rows[i][1] * rows[i][1] / (2 * kG);
+      if (rows[i][1] > 0.0 && rows[i][0] > -10.0)
+        return rows[i][0] + rows[i][1] * rows[i][1] / (2 * kG);
     return NAN;
   }
   double lowest() const {
@@ -144,10 +145,10 @@ TEST(AdaptiveStepControl, SnapLoadReboundAndPeakTension) {
   EXPECT_NEAR(fine.rise, rise, 2e-3 * rise);
   EXPECT_NEAR(fine.peak, peak, 2e-3 * peak);
   for (const char* integrator : {"generalized_alpha", "hht", "rk4"}) {
-    const SnapResult r = run_snap(fmt::format(
-        "integrator: {}, time_step: 0.1, duration: 2.2, output_interval: 0.1, "
-        "step_control: adaptive",
-        integrator));
+    const SnapResult r =
+        run_snap(fmt::format("integrator: {}, time_step: 0.1, duration: 2.2, output_interval: 0.1, "
+                             "step_control: adaptive",
+                             integrator));
     std::printf(
         "  adaptive %s: apex %.5f m, rise %.5f m (%.2f %%), peak %.5g N (%.2f %%); %ld steps, %ld "
         "rejected, smallest %.3g s\n",
@@ -215,10 +216,14 @@ TEST(AdaptiveStepControl, ErrorEstimatesHaveTheirOrder) {
       std::printf("  generalized-alpha rho_inf %.1f, h %.3f: estimate %.4e, true %.4e m\n", rho, h,
                   estimate, actual);
       // O(h^3); the next term of the series adds about omega h / 2 (10 % at h = 0.02 s)
-      if (previous != 0.0) EXPECT_NEAR(previous / estimate, 8.0, 0.8);
+      if (previous != 0.0) {
+        EXPECT_NEAR(previous / estimate, 8.0, 0.8);
+      }
       // Newmark (rho_inf = 1): the estimate is the leading term of the true error, which
       // differs from it by about omega h / 2 (here q^(4) / q^(3) = omega)
-      if (rho == 1.0) EXPECT_NEAR(estimate / actual, 1.0, 0.6 * 10.0 * h);
+      if (rho == 1.0) {
+        EXPECT_NEAR(estimate / actual, 1.0, 0.6 * 10.0 * h);
+      }
       previous = estimate;
     }
   }
@@ -227,7 +232,9 @@ TEST(AdaptiveStepControl, ErrorEstimatesHaveTheirOrder) {
     Rk4Augmented rk4;
     const auto [estimate, actual] = one_step(rk4, h);
     std::printf("  rk4, h %.3f: estimate %.4e, true %.4e m\n", h, estimate, actual);
-    if (previous != 0.0) EXPECT_NEAR(previous / estimate, 16.0, 1.6);  // O(h^4), 10 % as above
+    if (previous != 0.0) {
+      EXPECT_NEAR(previous / estimate, 16.0, 1.6);  // O(h^4), 10 % as above
+    }
     // the third-order embedded solution errs more than RK4 (an upper bound)
     EXPECT_GT(std::abs(estimate), std::abs(actual));
     previous = estimate;

@@ -23,8 +23,8 @@ struct DynamicsSettings {
   double duration = 0.0;         ///< s
   double output_interval = 0.0;  ///< s, a whole number of steps
   bool start_from_statics = false;
-  bool adaptive = false;       ///< step_control: adaptive
-  double min_time_step = 0.0;  ///< s; 0: time_step / 1024
+  bool adaptive = false;                                          ///< step_control: adaptive
+  double min_time_step = 0.0;                                     ///< s; 0: time_step / 1024
   double error_tolerance = SimulationSettings{}.error_tolerance;  ///< adaptive
   std::function<std::unique_ptr<Integrator>()> make_integrator;
   int line = 0;  ///< line of the dynamics section, for messages

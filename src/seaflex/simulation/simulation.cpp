@@ -57,8 +57,8 @@ double Simulation::error_norm(const State& state, Index& worst) const {
   double err = 0.0;
   worst = 0;
   for (Index i = 0; i < e.size(); ++i) {
-    const double sc = settings_.error_tolerance *
-                      (1.0 + std::max(std::abs(saved_.q[i]), std::abs(state.q[i])));
+    const double sc =
+        settings_.error_tolerance * (1.0 + std::max(std::abs(saved_.q[i]), std::abs(state.q[i])));
     const double r = std::abs(e[i]) / sc;
     if (!(r <= err)) {  // NaN counts as the worst
       err = r;
@@ -199,7 +199,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
         }
       }
       if (!failure.empty()) {
-        if (adaptive && level < levels_) {  // retry from the saved state with h / 2^shrink
+        if (adaptive && level < levels_) {         // retry from the saved state with h / 2^shrink
           if (step.ok) integrator_.reject_step();  // the integrator took the step: undo it
           state = saved_;
           growth.reset();

@@ -40,7 +40,7 @@ struct SimulationSettings {
   double min_time_step = 0.0;  ///< adaptive: smallest step (s); 0: h / 1024
   /// adaptive: tolerance of the estimated local error of the positions, relative to
   /// 1 + |q_i| (see the file header)
-  double error_tolerance = 1e-4;
+  double error_tolerance = 1e-6;
 };
 
 struct SimulationReport {
