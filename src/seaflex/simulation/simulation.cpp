@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 
@@ -14,6 +15,9 @@
 namespace seaflex {
 
 namespace {
+// fixed steps: the largest estimated local error of a step, relative to 1 + |q_i|, that a
+// run accepts (see loop())
+constexpr double kFixedStepErrorLimit = 0.01;
 // Coordinate with the largest |v| (or the first non-finite q or v): the likeliest culprit.
 Index worst_coordinate(const State& s) {
   for (Index i = 0; i < s.q.size(); ++i)
@@ -130,7 +134,8 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
   SimulationReport& report = pos.report;
   rows_ = pos.rows;
   const double scale = pos.scale;  // for the divergence test
-  GrowthMonitor growth;            // unbounded growth while still finite (growth_monitor.hpp)
+  double debug_max = 0.0;
+  GrowthMonitor growth;  // unbounded growth while still finite (growth_monitor.hpp)
   try {
     if (fresh) {
       dae_.start(state);
@@ -178,6 +183,28 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
       }
       // the step's accuracy: the local error estimate against the tolerance (file header)
       int shrink = 1;  // halvings for a retry
+      // fixed steps: a step whose own error estimate is a sizeable part of the motion (an
+      // impact taken in one step) is wrong, however well Newton converged
+      if (failure.empty() && !adaptive && integrator_.local_error_order() > 0) {
+        const VecX& e = integrator_.local_error();
+        double worst_ratio = 0.0;
+        Index worst = 0;
+        for (Index i = 0; i < e.size(); ++i) {
+          const double r = std::abs(e[i]) / (1.0 + std::abs(state.q[i]));
+          if (!(r <= worst_ratio)) {
+            worst_ratio = r;
+            worst = i;
+          }
+        }
+        if (std::getenv("SEAFLEX_DEBUG_ERR")) debug_max = std::max(debug_max, worst_ratio);
+        if (!(worst_ratio <= kFixedStepErrorLimit))
+          failure = fmt::format(
+              "t = {:.6g} s: the step is far too long for the motion: its estimated local error "
+              "is {:.3g} at {} = {:.6g} (more than {:g} x (1 + |q|)); an impact, a line going "
+              "taut or slack, or a sudden load within one step; try step_control: adaptive or a "
+              "shorter time_step",
+              t_new, e[worst], dae_.coordinate_name(worst), state.q[worst], kFixedStepErrorLimit);
+      }
       if (failure.empty() && order > 0) {
         Index worst = 0;
         const double err = error_norm(state, worst);
@@ -243,6 +270,8 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
     throw;
   }
   for (Recorder* r : recorders_) r->flush();
+  if (std::getenv("SEAFLEX_DEBUG_ERR"))
+    fmt::print(stderr, "DEBUG max fixed err ratio {:.3g}\n", debug_max);
   report.rows = rows_;
   report.end_time = state.t;
   return report;
