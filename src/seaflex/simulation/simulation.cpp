@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 
@@ -134,8 +133,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
   SimulationReport& report = pos.report;
   rows_ = pos.rows;
   const double scale = pos.scale;  // for the divergence test
-  double debug_max = 0.0;
-  GrowthMonitor growth;  // unbounded growth while still finite (growth_monitor.hpp)
+  GrowthMonitor growth;            // unbounded growth while still finite (growth_monitor.hpp)
   try {
     if (fresh) {
       dae_.start(state);
@@ -196,7 +194,6 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
             worst = i;
           }
         }
-        if (std::getenv("SEAFLEX_DEBUG_ERR")) debug_max = std::max(debug_max, worst_ratio);
         if (!(worst_ratio <= kFixedStepErrorLimit))
           failure = fmt::format(
               "t = {:.6g} s: the step is far too long for the motion: its estimated local error "
@@ -270,8 +267,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
     throw;
   }
   for (Recorder* r : recorders_) r->flush();
-  if (std::getenv("SEAFLEX_DEBUG_ERR"))
-    fmt::print(stderr, "DEBUG max fixed err ratio {:.3g}\n", debug_max);
+  fmt::print(stderr, "DEBUG max fixed err ratio {:.3g}\n", debug_max);
   report.rows = rows_;
   report.end_time = state.t;
   return report;
