@@ -267,7 +267,6 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
     throw;
   }
   for (Recorder* r : recorders_) r->flush();
-  fmt::print(stderr, "DEBUG max fixed err ratio {:.3g}\n", debug_max);
   report.rows = rows_;
   report.end_time = state.t;
   return report;
