@@ -80,6 +80,7 @@ void SimulationPosition::save(CheckpointWriter& out) const {
   out.put("sim.scale", scale);
   out.put("sim.steps", report.steps);
   out.put("sim.rejected_steps", report.rejected_steps);
+  out.put("sim.inaccurate_steps", report.inaccurate_steps);
   out.put("sim.iterations", report.iterations);
   out.put("sim.max_constraint_violation", report.max_constraint_violation);
   out.put("sim.min_step", report.min_step);
@@ -95,6 +96,9 @@ SimulationPosition SimulationPosition::load(const CheckpointReader& in) {
   p.scale = in.number("sim.scale");
   p.report.steps = in.integer("sim.steps");
   p.report.rejected_steps = in.integer("sim.rejected_steps");
+  // absent from checkpoints written before issue 22
+  if (in.has("sim.inaccurate_steps"))
+    p.report.inaccurate_steps = in.integer("sim.inaccurate_steps");
   p.report.iterations = in.integer("sim.iterations");
   p.report.max_constraint_violation = in.number("sim.max_constraint_violation");
   p.report.min_step = in.number("sim.min_step");
@@ -180,7 +184,8 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
         }
       }
       // the step's accuracy: the local error estimate against the tolerance (file header)
-      int shrink = 1;  // halvings for a retry
+      int shrink = 1;           // halvings for a retry
+      bool inaccurate = false;  // rejected by the error estimate
       // fixed steps: a step whose own error estimate is a sizeable part of the motion (an
       // impact taken in one step) is wrong, however well Newton converged
       if (failure.empty() && !adaptive && integrator_.local_error_order() > 0) {
@@ -208,6 +213,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
         // Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4, eq. (4.13): fac = 0.9
         factor = err > 0.0 ? 0.9 * std::pow(err, -1.0 / order) : 1e300;
         if (!(err <= 1.0)) {
+          inaccurate = true;
           shrink = std::isfinite(factor) && factor > 0.0
                        ? std::clamp(static_cast<int>(std::ceil(-std::log2(factor))), 1, 4)
                        : 4;
@@ -230,6 +236,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
           level = std::min(levels_, level + shrink);
           successes = 0;
           ++report.rejected_steps;
+          if (step.ok && inaccurate) ++report.inaccurate_steps;
           continue;
         }
         if (adaptive) failure += fmt::format(" (at the smallest time step, {:.3g} s)", h);

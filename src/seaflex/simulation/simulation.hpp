@@ -44,9 +44,10 @@ struct SimulationSettings {
 };
 
 struct SimulationReport {
-  long steps = 0;           ///< accepted steps
-  long rejected_steps = 0;  ///< failed or inaccurate steps retried with a smaller step (adaptive)
-  long iterations = 0;      ///< Newton iterations (or stages) of the accepted steps
+  long steps = 0;             ///< accepted steps
+  long rejected_steps = 0;    ///< failed or inaccurate steps retried with a smaller step (adaptive)
+  long inaccurate_steps = 0;  ///< of these, the steps whose error estimate was too large
+  long iterations = 0;        ///< Newton iterations (or stages) of the accepted steps
   long rows = 0;
   double end_time = 0.0;
   double max_constraint_violation = 0.0;
