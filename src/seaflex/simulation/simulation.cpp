@@ -187,8 +187,11 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
       int shrink = 1;           // halvings for a retry
       bool inaccurate = false;  // rejected by the error estimate
       // fixed steps: a step whose own error estimate is a sizeable part of the motion (an
-      // impact taken in one step) is wrong, however well Newton converged
-      if (failure.empty() && !adaptive && integrator_.local_error_order() > 0) {
+      // impact taken in one step) is wrong, however well Newton converged. Not for RK4: a
+      // step that long is far above its stability limit, which the divergence test and the
+      // growth monitor report with their own advice.
+      if (failure.empty() && !adaptive && integrator_.local_error_order() > 0 &&
+          integrator_.name() != "rk4") {
         const VecX& e = integrator_.local_error();
         double worst_ratio = 0.0;
         Index worst = 0;
