@@ -16,7 +16,8 @@
 // f (k from 1 to 4), and the step doubles once four steps in a row were accepted, the last
 // one with f >= 2, and the doubled step stays on its own grid. A failed step (Newton
 // failure, NaN/Inf, runaway) is retried with h/2. Down to the smallest step; a step that
-// fails or is still inaccurate there stops the run. Steps are whole powers-of-two
+// fails there stops the run, and so does one whose error estimate there exceeds the
+// fixed-step limit (simulation.cpp, 1 % of 1 + |q|). Steps are whole powers-of-two
 // fractions of h counted in integer ticks, so that every output time is hit exactly and
 // t carries no round-off.
 #pragma once
