@@ -61,7 +61,9 @@ void GeneralizedAlpha::prepare(const Dae& dae) {
   if (!constant_mass_) mass_eval_ = dae.make_eval();
   if (m_ > 0 && s_.constraints == ConstraintLevel::kStabilizedIndex2)
     projection_eval_ = dae.make_eval();
-  for (VecX* x : {&a_n_, &abar_n_, &a_, &abar_, &Ma_, &corr_, &factored_a_}) *x = VecX::Zero(n_);
+  for (VecX* x : {&a_n_, &abar_n_, &a_, &abar_, &Ma_, &corr_, &factored_a_, &a_prev_, &abar_prev_,
+                  &local_error_})
+    *x = VecX::Zero(n_);
   rhs_ = VecX::Zero(n_ + m_);
   sol_ = VecX::Zero(n_ + m_);
   eta_ = VecX::Zero(m_);
@@ -185,6 +187,15 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
   }
 }
 
+void GeneralizedAlpha::reject_step() {
+  a_n_ = a_prev_;
+  abar_n_ = abar_prev_;
+  a_scale_ = a_scale_prev_;
+  f_scale_ = f_scale_prev_;
+  refresh_next_ = refresh_prev_;
+  projection_ready_ = false;  // C_q at the restored state, at the next step
+}
+
 void GeneralizedAlpha::update_multipliers(const Dae& dae, State& state) {
   if (!started_) start(dae, state);
 }
@@ -274,6 +285,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       return fail(e.what());
     }
   }
+  const bool refresh_at_start = refresh_next_;
   bool want_fresh = s_.newton == NewtonMode::kFull || factored_h_ != h || refresh_next_;
   refresh_next_ = false;
   double previous = 0.0;       // the previous update, in units of the tolerance
@@ -461,6 +473,13 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   state.q = trial_.q;
   state.v = trial_.v;
   state.lambda = trial_.lambda;
+  // the local error of the positions (Zienkiewicz & Xie 1991 with abar, see the file header)
+  local_error_ = (h * h) * ((0.5 - s_.beta) * abar_n_ + s_.beta * abar_ - a_n_ / 3.0 - a_ / 6.0);
+  a_prev_ = a_n_;
+  abar_prev_ = abar_n_;
+  a_scale_prev_ = a_scale_;
+  f_scale_prev_ = f_scale_;
+  refresh_prev_ = refresh_at_start;
   a_n_ = a_;
   abar_n_ = abar_;
   // a matrix that has aged so that the step needed more than refresh_iterations

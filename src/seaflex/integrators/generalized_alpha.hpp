@@ -52,6 +52,21 @@
 // with the observed contraction rate theta (Hairer & Wanner, Solving ODEs II, sec. IV.8).
 // Measuring accelerations keeps the velocity error per step below h tolerance x q''
 // whatever h is: a position criterion lets the velocity error grow as 1/h.
+// Local error estimate (for the adaptive step control, simulation/simulation.hpp):
+// Zienkiewicz & Xie (1991), "A simple error estimator and adaptive time stepping procedure
+// for dynamic analysis", Earthquake Eng. Struct. Dyn. 20:871-887, compare Newmark's
+// positions with the Taylor series whose third derivative is the difference quotient of
+// the accelerations,
+//   q(t_n + h) ~ q_n + h v_n + h^2/2 a_n + h^2/6 (a_{n+1} - a_n),
+// which gives e = (beta - 1/6) h^2 (a_{n+1} - a_n) for Newmark (abar = a). With the abar of
+// generalized-alpha in the position update above, the same comparison reads
+//   e = h^2 [(1/2 - beta) abar_n + beta abar_{n+1} - a_n/3 - a_{n+1}/6],
+// which is Zienkiewicz & Xie's estimate when abar = a, and for a smooth motion equals
+// h^3 q^(3) (beta + (alpha_m - alpha_f)/2 - 1/6) + O(h^4), because abar_n =
+// a(t_n + (alpha_m - alpha_f) h) + O(h^2) (Arnold & Bruls 2007 sec. 3): the leading local
+// error of the positions. It is exactly zero for a constant acceleration (a free fall) and
+// large at a sudden change of the acceleration (an impact, a line going taut), which is
+// what the step control must resolve.
 // Modified Newton keeps a factorization across iterations and steps while the observed
 // contraction rate stays below settings.refresh_rate, and refactors at the current
 // iterate otherwise (the rate policy of Hairer & Wanner sec. IV.8 for simplified Newton).
@@ -101,6 +116,11 @@ class GeneralizedAlpha : public Integrator {
   bool save(CheckpointWriter& out) const override;
   void restore(const Dae& dae, const CheckpointReader& in) override;
 
+  /// Local error of the positions: q_{n+1} against the cubic through the step's true
+  /// accelerations (Zienkiewicz & Xie 1991, see the file header), O(h^3).
+  int local_error_order() const override { return 3; }
+  void reject_step() override;
+
   const GeneralizedAlphaSettings& settings() const { return s_; }
   /// The true acceleration q'' at the last accepted step.
   const VecX& acceleration() const { return a_n_; }
@@ -145,6 +165,10 @@ class GeneralizedAlpha : public Integrator {
   bool projection_ready_ = false;  // factored for the current state
   State trial_;
   std::string failure_;
+  // the memory before the last successful step, for reject_step()
+  VecX a_prev_, abar_prev_;
+  double a_scale_prev_ = 0.0, f_scale_prev_ = 0.0;
+  bool refresh_prev_ = false;
 };
 
 }  // namespace seaflex

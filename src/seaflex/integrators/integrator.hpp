@@ -46,6 +46,16 @@ class Integrator {
   /// reaction outputs; called by the Simulation before it records a row.
   virtual void update_multipliers(const Dae& dae, State& state) = 0;
 
+  /// Adaptive step control: an estimate of the local error of the positions of the last
+  /// successful step, per coordinate (m, or the coordinate's own unit for slopes and Euler
+  /// parameters); empty when the integrator has none. It shrinks as h^local_error_order().
+  const VecX& local_error() const { return local_error_; }
+  virtual int local_error_order() const { return 0; }
+  /// The Simulation rejected the last successful step (its error estimate was too large, or
+  /// the state diverged): the integrator takes back the memory that step changed, so that
+  /// the next step() continues from the state before it. Nothing by default.
+  virtual void reject_step() {}
+
   /// Restart files (core/checkpoint.hpp): writes what the integrator carries from one step
   /// to the next; false when it cannot be checkpointed.
   virtual bool save(CheckpointWriter& /*out*/) const { return false; }
@@ -55,6 +65,7 @@ class Integrator {
 
  protected:
   IntegratorStats stats_;
+  VecX local_error_;
 };
 
 }  // namespace seaflex

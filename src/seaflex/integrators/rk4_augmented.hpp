@@ -30,6 +30,9 @@ class Rk4Augmented : public Integrator {
     if (!prepared_) prepare(dae);
   }
   void update_multipliers(const Dae& dae, State& state) override;
+  /// Local error of the positions from an embedded third-order solution, O(h^4)
+  /// (rk4_augmented.cpp); RK4 carries no memory, so a rejected step needs nothing undone.
+  int local_error_order() const override { return 4; }
 
   /// Accelerations and multipliers at a state (one augmented solve); used for stages
   /// and for outputs that need lambda.

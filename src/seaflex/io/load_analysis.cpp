@@ -118,6 +118,11 @@ void load_dynamics(const YAML::Node& node, LoadContext& ctx) {
                                          "allowed; got {:g} s",
                                          *h, *h_min));
   d.min_time_step = h_min.value_or(0.0);
+  const auto err_tol =
+      r.number("error_tolerance", Need::kOptional, NumberRule::range(1e-10, 0.1, ""));
+  if (err_tol && !d.adaptive)
+    r.error("error_tolerance", "applies only with step_control: adaptive");
+  if (err_tol) d.error_tolerance = *err_tol;
   bool ok = h && T;
   if (h && T) {
     if (*T / *h > 2e9) {

@@ -23,8 +23,9 @@ struct DynamicsSettings {
   double duration = 0.0;         ///< s
   double output_interval = 0.0;  ///< s, a whole number of steps
   bool start_from_statics = false;
-  bool adaptive = false;       ///< step_control: adaptive
-  double min_time_step = 0.0;  ///< s; 0: time_step / 1024
+  bool adaptive = false;                                          ///< step_control: adaptive
+  double min_time_step = 0.0;                                     ///< s; 0: time_step / 1024
+  double error_tolerance = SimulationSettings{}.error_tolerance;  ///< adaptive
   std::function<std::unique_ptr<Integrator>()> make_integrator;
   int line = 0;  ///< line of the dynamics section, for messages
 
@@ -33,6 +34,7 @@ struct DynamicsSettings {
     SimulationSettings s{duration, time_step, output_interval};
     s.step_control = adaptive ? StepControl::kAdaptive : StepControl::kFixed;
     s.min_time_step = min_time_step;
+    s.error_tolerance = error_tolerance;
     return s;
   }
 };

@@ -14,6 +14,9 @@
 namespace seaflex {
 
 namespace {
+// fixed steps: the largest estimated local error of a step, relative to 1 + |q_i|, that a
+// run accepts (see loop())
+constexpr double kFixedStepErrorLimit = 0.01;
 // Coordinate with the largest |v| (or the first non-finite q or v): the likeliest culprit.
 Index worst_coordinate(const State& s) {
   for (Index i = 0; i < s.q.size(); ++i)
@@ -37,6 +40,8 @@ Simulation::Simulation(Dae& dae, ChannelList channels, Integrator& integrator,
       throw std::invalid_argument("Simulation: min_time_step exceeds the time step");
     levels_ = std::clamp(static_cast<int>(std::ceil(std::log2(settings_.time_step / h_min) - 1e-9)),
                          0, 20);
+    if (!(settings_.error_tolerance > 0.0))
+      throw std::invalid_argument("Simulation: error_tolerance must be positive");
   }
   row_.resize(channels_.size());
 }
@@ -48,6 +53,24 @@ void Simulation::record(State& state) {
   ++rows_;
 }
 
+double Simulation::error_norm(const State& state, Index& worst) const {
+  // Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4, eq. (4.10), max norm, with
+  // Atol = Rtol = error_tolerance
+  const VecX& e = integrator_.local_error();
+  double err = 0.0;
+  worst = 0;
+  for (Index i = 0; i < e.size(); ++i) {
+    const double sc =
+        settings_.error_tolerance * (1.0 + std::max(std::abs(saved_.q[i]), std::abs(state.q[i])));
+    const double r = std::abs(e[i]) / sc;
+    if (!(r <= err)) {  // NaN counts as the worst
+      err = r;
+      worst = i;
+    }
+  }
+  return err;
+}
+
 void SimulationPosition::save(CheckpointWriter& out) const {
   out.put("sim.t0", t0);
   out.put("sim.ticks", ticks);
@@ -57,6 +80,7 @@ void SimulationPosition::save(CheckpointWriter& out) const {
   out.put("sim.scale", scale);
   out.put("sim.steps", report.steps);
   out.put("sim.rejected_steps", report.rejected_steps);
+  out.put("sim.inaccurate_steps", report.inaccurate_steps);
   out.put("sim.iterations", report.iterations);
   out.put("sim.max_constraint_violation", report.max_constraint_violation);
   out.put("sim.min_step", report.min_step);
@@ -72,6 +96,9 @@ SimulationPosition SimulationPosition::load(const CheckpointReader& in) {
   p.scale = in.number("sim.scale");
   p.report.steps = in.integer("sim.steps");
   p.report.rejected_steps = in.integer("sim.rejected_steps");
+  // absent from checkpoints written before issue 22
+  if (in.has("sim.inaccurate_steps"))
+    p.report.inaccurate_steps = in.integer("sim.inaccurate_steps");
   p.report.iterations = in.integer("sim.iterations");
   p.report.max_constraint_violation = in.number("sim.max_constraint_violation");
   p.report.min_step = in.number("sim.min_step");
@@ -102,6 +129,11 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
   const long total = nominal * per_step, out_ticks = every_ * per_step;
   const double tick = settings_.time_step / static_cast<double>(per_step);
   const bool adaptive = settings_.step_control == StepControl::kAdaptive;
+  // adaptive: the order p of the integrator's local error estimate (0: none, only failed
+  // steps are retried)
+  const int order = adaptive ? integrator_.local_error_order() : 0;
+  // largest step-size factor f = 0.9 err^(-1/p) from the last accepted step
+  double factor = 0.0;
   SimulationReport& report = pos.report;
   rows_ = pos.rows;
   const double scale = pos.scale;  // for the divergence test
@@ -151,13 +183,72 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
               wh / h, wh / h / (2.0 * std::numbers::pi), wh, 2.0 * std::sqrt(2.0) * h / wh);
         }
       }
+      // the step's accuracy: the local error estimate against the tolerance (file header)
+      int shrink = 1;           // halvings for a retry
+      bool inaccurate = false;  // rejected by the error estimate
+      // fixed steps: a step whose own error estimate is a sizeable part of the motion (an
+      // impact taken in one step) is wrong, however well Newton converged. Not for RK4: a
+      // step that long is far above its stability limit, which the divergence test and the
+      // growth monitor report with their own advice.
+      if (failure.empty() && !adaptive && integrator_.local_error_order() > 0 &&
+          integrator_.name() != "rk4") {
+        const VecX& e = integrator_.local_error();
+        double worst_ratio = 0.0;
+        Index worst = 0;
+        for (Index i = 0; i < e.size(); ++i) {
+          const double r = std::abs(e[i]) / (1.0 + std::abs(state.q[i]));
+          if (!(r <= worst_ratio)) {
+            worst_ratio = r;
+            worst = i;
+          }
+        }
+        if (!(worst_ratio <= kFixedStepErrorLimit))
+          failure = fmt::format(
+              "t = {:.6g} s: the step is far too long for the motion: its estimated local error "
+              "is {:.3g} at {} = {:.6g} (more than {:g} x (1 + |q|)); an impact, a line going "
+              "taut or slack, or a sudden load within one step; try step_control: adaptive or a "
+              "shorter time_step",
+              t_new, e[worst], dae_.coordinate_name(worst), state.q[worst], kFixedStepErrorLimit);
+      }
+      if (failure.empty() && order > 0) {
+        Index worst = 0;
+        const double err = error_norm(state, worst);
+        // Hairer, Norsett & Wanner, Solving ODEs I, sec. II.4, eq. (4.13): fac = 0.9
+        factor = err > 0.0 ? 0.9 * std::pow(err, -1.0 / order) : 1e300;
+        // at the smallest step a step above the tolerance is still taken unless it is as wrong
+        // as the fixed-step check allows (kFixedStepErrorLimit): a sudden load on a model out of
+        // equilibrium (a riser started straight) excites modes no step resolves, which
+        // generalized-alpha damps and the estimate still sees
+        const bool at_floor = level >= levels_;
+        if (!(err <= 1.0) &&
+            !(at_floor && err * settings_.error_tolerance <= kFixedStepErrorLimit)) {
+          inaccurate = true;
+          shrink = std::isfinite(factor) && factor > 0.0
+                       ? std::clamp(static_cast<int>(std::ceil(-std::log2(factor))), 1, 4)
+                       : 4;
+          failure = fmt::format(
+              "t = {:.6g} s: the estimated local error of the step, {:.3g} at {}, exceeds "
+              "error_tolerance x (1 + |q|) = {:.3g} (error_tolerance {:g}): the motion changes "
+              "too fast for the step (an impact, a line going taut){}",
+              t_new, integrator_.local_error()[worst], dae_.coordinate_name(worst),
+              settings_.error_tolerance *
+                  (1.0 + std::max(std::abs(saved_.q[worst]), std::abs(state.q[worst]))),
+              settings_.error_tolerance,
+              at_floor ? fmt::format(", and at the smallest step it exceeds {:g} x (1 + |q|); "
+                                     "lower min_time_step",
+                                     kFixedStepErrorLimit)
+                       : std::string());
+        }
+      }
       if (!failure.empty()) {
-        if (adaptive && level < levels_) {  // retry from the saved state with h / 2
+        if (adaptive && level < levels_) {         // retry from the saved state with h / 2^shrink
+          if (step.ok) integrator_.reject_step();  // the integrator took the step: undo it
           state = saved_;
           growth.reset();
-          ++level;
+          level = std::min(levels_, level + shrink);
           successes = 0;
           ++report.rejected_steps;
+          if (step.ok && inaccurate) ++report.inaccurate_steps;
           continue;
         }
         if (adaptive) failure += fmt::format(" (at the smallest time step, {:.3g} s)", h);
@@ -170,8 +261,10 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
       report.min_step = std::min(report.min_step, h);
       report.max_constraint_violation = std::max(report.max_constraint_violation, step.residual);
       dae_.accept_step(state);
-      // grow back once four steps passed and the doubled step stays on its own grid
-      if (level > 0 && ++successes >= 4 && ticks % (step_ticks * 2) == 0) {
+      // grow back once four steps passed, the error estimate allows a doubled step and the
+      // doubled step stays on its own grid
+      if (level > 0 && ++successes >= 4 && (order == 0 || factor >= 2.0) &&
+          ticks % (step_ticks * 2) == 0) {
         --level;
         successes = 0;
       }

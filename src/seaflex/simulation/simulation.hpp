@@ -2,11 +2,24 @@
 // step for NaN/Inf and divergence, and on failure flushes the recorders before throwing,
 // so results up to the failure stay on disk. After a SIGINT/SIGTERM (core/interrupt.hpp) it
 // stops at the end of the current step and throws Interrupted, after flushing.
-// Step control: fixed (every step h, reproducible), or adaptive: a failed step (Newton
-// failure, NaN/Inf, runaway) is retried from the saved state with h/2, down to the
-// smallest step; after four accepted steps the step doubles back towards h. Steps are
-// whole powers-of-two fractions of h counted in integer ticks, so that every output time
-// is hit exactly and t carries no round-off.
+// Step control: fixed (every step h, reproducible), or adaptive. Adaptive steps are
+// accepted only when they are accurate: the integrator's estimate e of the local error of
+// the positions (Integrator::local_error(); generalized-alpha: Zienkiewicz & Xie 1991,
+// RK4: an embedded third-order solution) is measured in the norm of Hairer, Norsett &
+// Wanner (Solving ODEs I, sec. II.4, eq. (4.10)-(4.11), max norm)
+//   err = max_i |e_i| / sc_i,  sc_i = tol (1 + max(|q_i(t_n)|, |q_i(t_n+1)|)),
+// with Atol = Rtol = tol = error_tolerance (m for positions; slopes and Euler parameters
+// are dimensionless), and the step is accepted when err <= 1. The step-size factor is
+// that of the same section, eq. (4.13), f = 0.9 err^(-1/p) with p the order of the estimate
+// (e ~ h^p: 3 for generalized-alpha, 4 for RK4), on the grid of powers of two: a rejected
+// step is retried from the saved state with h / 2^k, 2^-k the largest power of two at most
+// f (k from 1 to 4), and the step doubles once four steps in a row were accepted, the last
+// one with f >= 2, and the doubled step stays on its own grid. A failed step (Newton
+// failure, NaN/Inf, runaway) is retried with h/2. Down to the smallest step; a step that
+// fails there stops the run, and so does one whose error estimate there exceeds the
+// fixed-step limit (simulation.cpp, 1 % of 1 + |q|). Steps are whole powers-of-two
+// fractions of h counted in integer ticks, so that every output time is hit exactly and
+// t carries no round-off.
 #pragma once
 
 #include <functional>
@@ -26,12 +39,16 @@ struct SimulationSettings {
   double output_interval = 0.0;  ///< s; a multiple of h (0: every step)
   StepControl step_control = StepControl::kFixed;
   double min_time_step = 0.0;  ///< adaptive: smallest step (s); 0: h / 1024
+  /// adaptive: tolerance of the estimated local error of the positions, relative to
+  /// 1 + |q_i| (see the file header)
+  double error_tolerance = 1e-6;
 };
 
 struct SimulationReport {
-  long steps = 0;           ///< accepted steps
-  long rejected_steps = 0;  ///< failed steps retried with a smaller step (adaptive)
-  long iterations = 0;      ///< Newton iterations (or stages) of the accepted steps
+  long steps = 0;             ///< accepted steps
+  long rejected_steps = 0;    ///< failed or inaccurate steps retried with a smaller step (adaptive)
+  long inaccurate_steps = 0;  ///< of these, the steps whose error estimate was too large
+  long iterations = 0;        ///< Newton iterations (or stages) of the accepted steps
   long rows = 0;
   double end_time = 0.0;
   double max_constraint_violation = 0.0;
@@ -85,6 +102,9 @@ class Simulation {
 
  private:
   void record(State& state);
+  // the integrator's local error estimate of the step from saved_ to state, in units of
+  // the tolerance (the file header); the coordinate where it is largest
+  double error_norm(const State& state, Index& worst) const;
   SimulationReport loop(State& state, SimulationPosition pos, bool fresh);
 
   Dae& dae_;
