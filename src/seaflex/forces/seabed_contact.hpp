@@ -43,7 +43,7 @@ struct SeabedContactProperties {
   double damping = 0.0;           ///< zeta, fraction of critical damping
   double friction_axial = 0.0;    ///< mu_a along the line's axis
   double friction_lateral = 0.0;  ///< mu_l across it
-  double slip_velocity = 1e-3;    ///< v_s (m/s), the regularization of Coulomb friction
+  double slip_velocity = 0.01;    ///< v_s (m/s), the regularization of Coulomb friction
   int gauss_points = 5;           ///< per element, on the part in contact
 };
 

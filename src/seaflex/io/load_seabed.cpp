@@ -160,7 +160,7 @@ void load_seabed(MapReader& env, LoadContext& ctx) {
     }
   }
   p.slip_velocity =
-      r.number("slip_velocity", Need::kOptional, NumberRule::positive("m/s")).value_or(1e-3);
+      r.number("slip_velocity", Need::kOptional, NumberRule::positive("m/s")).value_or(0.01);
   p.gauss_points = r.integer("gauss_points", Need::kOptional, 1, 20).value_or(5);
   std::vector<std::string> lines;
   bool lines_ok = true;
