@@ -53,6 +53,7 @@ class MorisonBeam : public Force {
   bool constant_mass() const override { return coefficients_.ca == 0.0; }
 
   const MorisonBeamCoefficients& coefficients() const { return coefficients_; }
+  const AncfBeam& beam() const { return beam_; }
   /// Wet part [xi0, xi1] of element k; xi1 <= xi0 when dry.
   std::pair<double, double> wet_interval(const State& state, int k) const;
 

@@ -61,6 +61,8 @@ struct LoadContext {
   std::map<std::string, Prescribed> prescribed;
   /// where each output.channels pattern was given (mark, key path), in order
   std::vector<std::pair<YAML::Mark, std::string>> output_patterns;
+  /// run once every body and the hydrodynamics section are read (seabed contact)
+  std::vector<std::function<void(LoadContext&)>> after_bodies;
 
   /// Reads the body name at key: a body of the model, or ground (nullptr with *ground set)
   /// when allow_ground. Reports a dangling reference with a suggestion.
@@ -149,6 +151,9 @@ void load_loads(const YAML::Node& node, LoadContext& ctx);
 void load_statics(const YAML::Node& node, LoadContext& ctx);
 /// environment.water, waves, current, wave_probes (load_ocean.cpp); g = |gravity|
 void load_water(MapReader& env, LoadContext& ctx, double g);
+/// environment.seabed (load_seabed.cpp), after load_water: its contact forces are added
+/// through ctx.after_bodies
+void load_seabed(MapReader& env, LoadContext& ctx);
 /// hydrodynamics.<body>.bem (load_bem.cpp): adds the BEM forces, and A(inf) and the
 /// hydrostatic matrix to set
 void load_bem(MapReader& bem, const RigidBody& body, HydroMatrixSet& set, LoadContext& ctx);

@@ -200,7 +200,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();
@@ -219,6 +219,7 @@ Model load(const YAML::Node& root, const std::string& name) {
       }
     }
     load_water(r, ctx, model.gravity.norm());
+    load_seabed(r, ctx);
     r.finish();
   }
 
@@ -230,6 +231,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   if (const YAML::Node n = top.get("connections"); n.IsDefined()) load_connections(n, ctx);
   if (const YAML::Node n = top.get("loads"); n.IsDefined()) load_loads(n, ctx);
   if (const YAML::Node n = top.get("hydrodynamics"); n.IsDefined()) load_hydrodynamics(n, ctx);
+  for (const auto& f : ctx.after_bodies) f(ctx);
   if (model.gravity.norm() > 0.0) {
     std::vector<const Body*> all;
     for (const auto& b : model.system->bodies()) all.push_back(b.get());

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "seaflex/hydro/ocean.hpp"
+#include "seaflex/hydro/seabed.hpp"
 #include "seaflex/integrators/integrator.hpp"
 #include "seaflex/io/design_settings.hpp"
 #include "seaflex/simulation/simulation.hpp"
@@ -81,6 +82,8 @@ struct Model {
   Vec3 gravity = Vec3::Zero();
   /// The sea (environment.water, waves, current); null when the model has no water.
   std::shared_ptr<const hydro::Ocean> ocean;
+  /// The seabed (environment.seabed); null without one.
+  std::shared_ptr<const hydro::Seabed> seabed;
   /// Notes for the user that do not stop the run (a wave frequency outside a BEM range).
   std::vector<std::string> warnings;
   /// Wave elevation outputs: channel name and the point (x, y) where it is taken.
