@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/input_file.hpp"
 #include "seaflex/io/yaml_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -40,8 +41,7 @@ struct Table {
 };
 
 std::optional<Table> read_table(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
+  std::istringstream in(read_input_file(path.string(), "fatigue result", kMaxDataFileBytes));
   Table t;
   std::string line, cell;
   if (!std::getline(in, line)) return std::nullopt;
@@ -79,9 +79,7 @@ int cmd_fatigue(const std::string& file, const std::string& dir,
   io::Diagnostics diag(file);
   YAML::Node root;
   try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::BadFile&) {
-    diag.error(YAML::Mark::null_mark(), "", "cannot open the scatter diagram file");
+    root = YAML::Load(read_input_file(file, "scatter diagram file", kMaxModelFileBytes));
   } catch (const YAML::ParserException& e) {
     diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
   }

@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
 
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/constraints/prescribed_coordinates.hpp"
+#include "seaflex/core/input_file.hpp"
 #include "seaflex/forces/gravity.hpp"
 #include "seaflex/forces/rotational_spring.hpp"
 #include "seaflex/forces/spring_damper.hpp"
@@ -288,15 +288,9 @@ Model load_model_text(const std::string& text, const std::string& name) {
 }
 
 Model load_model_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    Diagnostics diag(path);
-    diag.error(YAML::Mark::null_mark(), "", "cannot open the model file");
-    diag.throw_if_any();
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return load_model_text(buffer.str(), path);
+  // a regular file of at most kMaxModelFileBytes; InputError "model.yaml: cannot read the
+  // model file: it is a directory" otherwise
+  return load_model_text(read_input_file(path, "model file", kMaxModelFileBytes), path);
 }
 
 }  // namespace seaflex::io
