@@ -77,13 +77,8 @@ std::vector<std::string> fatigue_beams(const fs::path& folder) {
 int cmd_fatigue(const std::string& file, const std::string& dir,
                 const std::function<int(const std::string&, const std::string&)>& run_model) {
   io::Diagnostics diag(file);
-  YAML::Node root;
-  try {
-    root = YAML::Load(read_input_file(file, "scatter diagram file", kMaxModelFileBytes));
-  } catch (const YAML::ParserException& e) {
-    diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
-  }
-  diag.throw_if_any();
+  const YAML::Node root =
+      io::parse_document(read_input_file(file, "scatter diagram file", kMaxModelFileBytes), file);
   io::MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();
   bool normalise = false;

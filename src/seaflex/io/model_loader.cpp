@@ -253,16 +253,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   return model;
 }
 
-YAML::Node parse(const std::string& text, const std::string& name) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    Diagnostics diag(name);
-    diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
-    diag.throw_if_any();
-  }
-  return {};
-}
+
 
 }  // namespace
 
@@ -278,7 +269,7 @@ ChannelList model_channels(const Model& model) {
 }
 
 Model load_model_text(const std::string& text, const std::string& name) {
-  const YAML::Node root = parse(text, name);
+  const YAML::Node root = parse_document(text, name);
   if (!root.IsDefined() || root.IsNull()) {
     Diagnostics diag(name);
     diag.error(YAML::Mark::null_mark(), "", "the model file is empty");

@@ -311,4 +311,22 @@ void MapReader::finish() {
   }
 }
 
+YAML::Node parse_document(const std::string& text, const std::string& name) {
+  Diagnostics diag(name);
+  try {
+    std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    if (documents.size() > 1)
+      diag.error(documents[1].Mark(), "",
+                 "a second YAML document starts here (after '---' or '...'): seaflex reads one "
+                 "document per file; delete it, with the '---' or '...' before it, or put it in "
+                 "a file of its own");
+    diag.throw_if_any();
+    return documents.empty() ? YAML::Node() : documents.front();
+  } catch (const YAML::ParserException& e) {
+    diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
+    diag.throw_if_any();
+  }
+  return {};
+}
+
 }  // namespace seaflex::io

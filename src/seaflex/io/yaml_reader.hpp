@@ -112,4 +112,10 @@ std::optional<Vec3> read_vec3(Diagnostics& diag, const YAML::Node& node, const s
 /// Short description of a node for messages: its scalar text or its kind.
 std::string describe(const YAML::Node& node);
 
+/// The one YAML document of text (a model or scatter diagram file named file); an undefined
+/// node when the text holds none (empty, or only comments). Throws InputError for a syntax
+/// error, and for a second document (after '---', or '...' and more than comments) at the
+/// line where it starts: yaml-cpp's Load would ignore it silently.
+YAML::Node parse_document(const std::string& text, const std::string& file);
+
 }  // namespace seaflex::io
