@@ -140,6 +140,14 @@ std::pair<std::unique_ptr<Marker>, std::unique_ptr<Marker>> read_markers(MapRead
 /// true or false only (absent: false; nullopt after a reported problem).
 std::optional<bool> read_bool(MapReader& r, std::string_view key);
 
+/// The densest material (osmium, 22,590 kg/m^3) with a margin for lumped masses: 30,000
+/// kg/m^3. A larger structural density is a unit mistake (a unit weight in N/m^3).
+inline constexpr double kMaxDensity = 30000.0;
+/// Unit mistakes in the material of a beam or plate, reported at youngs_modulus or density:
+/// a modulus in GPa or MPa (below 1e4 Pa), a density in t/m^3 (below 100 kg/m^3) or a unit
+/// weight in N/m^3 (above kMaxDensity). False when any.
+bool check_material(MapReader& r, std::optional<double> E, std::optional<double> rho);
+
 void load_bodies(const YAML::Node& node, LoadContext& ctx);
 void load_markers(const YAML::Node& node, LoadContext& ctx);
 void load_joints(const YAML::Node& node, LoadContext& ctx);

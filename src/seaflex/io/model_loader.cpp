@@ -253,8 +253,6 @@ Model load(const YAML::Node& root, const std::string& name) {
   return model;
 }
 
-
-
 }  // namespace
 
 ChannelList model_channels(const Model& model) {

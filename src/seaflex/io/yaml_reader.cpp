@@ -106,6 +106,15 @@ std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, con
     diag.error(node.Mark(), key, fmt::format("must be a finite number, got '{}'", s));
     return std::nullopt;
   }
+  // lengths and coordinates are bounded, so that their differences and squares stay finite
+  // (a beam from z = -1e308 to 1e308 had an infinite length, "off by nan")
+  if (rule.unit == "m" && std::abs(value) > kMaxLength) {
+    diag.error(node.Mark(), key,
+               fmt::format("{} m is beyond the bound of {:g} m (100,000 km) on lengths and "
+                           "coordinates",
+                           s, kMaxLength));
+    return std::nullopt;
+  }
   const bool low = rule.min_exclusive ? !(value > rule.min) : !(value >= rule.min);
   if (low || value > rule.max) {
     std::string expected;

@@ -100,7 +100,13 @@ class MapReader {
   std::vector<std::string> known_;
 };
 
-/// A scalar as a finite double; nullopt (and an error) otherwise.
+/// The bound on the magnitude of every length and coordinate (unit "m"): 1e8 m, beyond any
+/// site's coordinates (UTM northings reach 1e7 m), and small enough that differences and
+/// squares of lengths stay finite.
+inline constexpr double kMaxLength = 1e8;
+
+/// A scalar as a finite double; nullopt (and an error) otherwise. With the unit "m", its
+/// magnitude must not exceed kMaxLength.
 std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, const std::string& key,
                                   const NumberRule& rule);
 /// A scalar as an int in [min, max].
