@@ -373,19 +373,15 @@ void load_bodies(const YAML::Node& node, LoadContext& ctx) {
     }
     const std::string name = kv.first.Scalar();
     bodies.has(name);  // every entry is a body: no unknown keys at this level
-    const std::string path = "bodies." + name;
+    const std::string path = name_key("bodies", name);
     if (name == kGroundName) {
       ctx.diag.error(kv.first.Mark(), path,
                      "'ground' is reserved for the fixed world frame; give the body another name");
       ctx.failed_bodies.push_back(name);
       continue;
     }
-    if (name.empty() || name.find_first_not_of(
-                            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
-                            std::string::npos) {
-      ctx.diag.error(kv.first.Mark(), path,
-                     "body names may use letters, digits, '_' and '-' only (they become output "
-                     "channel names such as <body>.n0.x)");
+    if (const std::string problem = name_problem(name, "body", "<body>.n0.x"); !problem.empty()) {
+      ctx.diag.error(kv.first.Mark(), path, problem);
       ctx.failed_bodies.push_back(name);
       continue;
     }

@@ -130,6 +130,17 @@ struct PairEntry {
 };
 /// The `name` of an entry, checked (letters, digits, '_', '-') and unique among names;
 /// what = "joint" or "connection" for messages.
+/// The longest name of a body, joint, connection or wave probe: 64 characters. Names become
+/// output channel names (CSV column headers) and file names (statics_partial.<beam>.envelope
+/// .csv), which file systems limit to 255 bytes.
+inline constexpr std::size_t kMaxNameLength = 64;
+/// "" for a valid name: 1 to kMaxNameLength letters, digits, '_' and '-' (no comma, quote,
+/// newline or '.', which would break a CSV header or a channel name); otherwise the message.
+/// what: "body", "joint", "wave probe"; channel: an example of the channel ("<body>.n0.x").
+std::string name_problem(const std::string& name, std::string_view what, std::string_view channel);
+/// The key to report a name at: "parent.name", or parent alone when the name is too long
+/// or holds control characters (a newline would split the message).
+std::string name_key(std::string_view parent, const std::string& name);
 std::optional<std::string> read_entry_name(MapReader& r, std::set<std::string>& names,
                                            const char* what);
 PairEntry read_pair(MapReader& r, std::set<std::string>& names, const char* what);

@@ -404,6 +404,11 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
       for (const auto& kv : probes) {
         const std::string name = kv.first.as<std::string>();
         pr.has(name);
+        if (const std::string problem = name_problem(name, "wave probe", "wave.eta.<name>");
+            !problem.empty()) {
+          ctx.diag.error(kv.first.Mark(), name_key(pr.path(), name), problem);
+          continue;
+        }
         const YAML::Node& xy = kv.second;
         if (!xy.IsSequence() || xy.size() != 2) {
           ctx.diag.error(xy.Mark(), pr.key_path(name), "expected [x, y] in m");
