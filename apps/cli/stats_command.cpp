@@ -36,7 +36,7 @@ std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path
                                                const std::string& hint) {
   std::istringstream in;
   try {
-    in.str(read_input_file(path.string(), "file", kMaxDataFileBytes));
+    in.str(read_input_file(path.string(), "result file", kMaxDataFileBytes));
   } catch (const InputError& e) {
     if (hint.empty()) throw;
     throw InputError(
