@@ -64,8 +64,27 @@ dynamics: {integrator: rk4, time_step: 0.1, duration: 1}
 """
 
 
-def limit_memory():
+def set_memory_limit():
     resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
+
+
+def memory_limit_usable():
+    """False for a sanitizer build: AddressSanitizer reserves terabytes of address space for
+    its shadow memory and cannot start under RLIMIT_AS (the release build asserts the bound)."""
+    try:
+        r = subprocess.run([SEAFLEX, "--version"], capture_output=True, timeout=TIME_LIMIT,
+                           preexec_fn=set_memory_limit)
+        return r.returncode == 0
+    except (OSError, subprocess.SubprocessError):
+        return False
+
+
+LIMIT_MEMORY = memory_limit_usable()
+
+
+def limit_memory():
+    if LIMIT_MEMORY:
+        set_memory_limit()
 
 
 def run_bounded(*args, cwd=None, timeout=TIME_LIMIT):
