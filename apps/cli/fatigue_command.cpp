@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/input_file.hpp"
 #include "seaflex/io/yaml_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -40,8 +41,7 @@ struct Table {
 };
 
 std::optional<Table> read_table(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
+  std::istringstream in(read_input_file(path.string(), "fatigue result", kMaxDataFileBytes));
   Table t;
   std::string line, cell;
   if (!std::getline(in, line)) return std::nullopt;
@@ -77,15 +77,8 @@ std::vector<std::string> fatigue_beams(const fs::path& folder) {
 int cmd_fatigue(const std::string& file, const std::string& dir,
                 const std::function<int(const std::string&, const std::string&)>& run_model) {
   io::Diagnostics diag(file);
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::BadFile&) {
-    diag.error(YAML::Mark::null_mark(), "", "cannot open the scatter diagram file");
-  } catch (const YAML::ParserException& e) {
-    diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
-  }
-  diag.throw_if_any();
+  const YAML::Node root =
+      io::parse_document(read_input_file(file, "scatter diagram file", kMaxModelFileBytes), file);
   io::MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();
   bool normalise = false;

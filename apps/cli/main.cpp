@@ -261,6 +261,7 @@ void print_summary(const io::Model& model) {
 // statics_partial.csv (.h5) before the error propagates
 State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
   State state = model.system->initial_state();
+  const ScopedInterruptPolling polling;  // a signal stops statics after its increment
   try {
     const StaticsReport rep = solve_statics(
         *model.system, state, model.statics,
@@ -279,10 +280,19 @@ State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
     std::fprintf(stderr, "seaflex: the last converged statics increment is in %s\n",
                  partial.names().c_str());
     throw;
+  } catch (const Interrupted&) {  // SIGINT/SIGTERM: keep the last converged increment
+    Outputs partial(model, dir, "statics_partial", false);
+    partial.write_row(io::output_channels(model), state);
+    std::fprintf(stderr, "seaflex: the last converged statics increment is in %s\n",
+                 partial.names().c_str());
+    throw;
   }
   Outputs outputs(model, dir, "statics", false);
   outputs.write_row(io::output_channels(model), state);
   if (!quiet) fmt::print("{}", outputs.design_summary());
+  // a signal during the last increment: statics are complete and written; stop here
+  if (const int sig = interrupt_signal(); sig != 0)
+    throw Interrupted(sig, fmt::format("after statics (written to {})", outputs.names()));
   return state;
 }
 
@@ -376,6 +386,7 @@ int simulate(Simulation& sim, State& state, const io::Model& model, const fs::pa
              cli::ProgressLine& progress) {
   const auto& d = *model.dynamics;
   sim.set_progress([&](double t, double T) { progress.update(t, T); });
+  const ScopedInterruptPolling polling;  // a signal stops the run after its current step
   try {
     const double resume_at_t = state.t;
     const SimulationReport rep = resume_at ? sim.resume(state, *resume_at) : sim.run(state);

@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/input_file.hpp"
 #include "seaflex/io/output_selection.hpp"
 #include "seaflex/io/yaml_reader.hpp"
 
@@ -34,8 +34,14 @@ std::vector<std::string> split(const std::string& line) {
 // header and rows of a CSV file; InputError when it cannot be read
 std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path,
                                                const std::string& hint) {
-  std::ifstream in(path);
-  if (!in) throw InputError({Diagnostic{path.string(), 0, 0, "", "cannot open the file; " + hint}});
+  std::istringstream in;
+  try {
+    in.str(read_input_file(path.string(), "result file", kMaxDataFileBytes));
+  } catch (const InputError& e) {
+    if (hint.empty()) throw;
+    throw InputError(
+        {Diagnostic{path.string(), 0, 0, "", e.diagnostics().front().message + "; " + hint}});
+  }
   std::vector<std::vector<std::string>> rows;
   std::string line;
   while (std::getline(in, line))
@@ -53,7 +59,7 @@ int cmd_stats(const std::string& dir, const std::vector<std::string>& patterns) 
     throw InputError({Diagnostic{(d / "statistics.csv").string(), 0, 0, "", "empty"}});
   // most probable maxima by channel and method
   std::map<std::string, std::map<std::string, std::string>> mpm;
-  if (std::filesystem::exists(d / "extremes.csv"))
+  if (input_file_present((d / "extremes.csv").string()))
     for (const auto& row : read_csv(d / "extremes.csv", ""))
       if (row.size() >= 7) mpm[row[0]][row[1]] = row[6];
   std::vector<std::string> names;

@@ -196,7 +196,7 @@ class Cli(TempDirCase):
     def test_missing_file_and_usage(self):
         r = run("check", os.path.join(self.dir, "nope.yaml"))
         self.assertEqual(r.returncode, 2)
-        self.assertIn("nope.yaml: cannot open the model file", r.stderr)
+        self.assertIn("nope.yaml: cannot read the model file: no such file", r.stderr)
         self.assertEqual(run().returncode, 2)
         self.assertEqual(run("frobnicate").returncode, 2)
         self.assertEqual(run("--help").returncode, 0)

@@ -212,7 +212,8 @@ class StatisticsOfARun(TempDirCase):
                 self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
         r = run("stats", os.path.join(self.dir, "nowhere"))
         self.assertEqual(r.returncode, 2)
-        self.assertIn("statistics.csv: cannot open the file", r.stderr)
+        self.assertIn("statistics.csv: cannot read the result file: no such file; run a model with a "
+                      "statistics section (docs/model-format.md)", r.stderr)
 
     def test_statistics_in_the_hdf5_file(self):
         import h5py

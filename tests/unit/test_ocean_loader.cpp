@@ -158,8 +158,8 @@ TEST(OceanLoader, BemFilesAndTheirErrors) {
                 kSphere + "; the RAO of the nearest tabulated frequency is used");
   // a missing database and a malformed one
   EXPECT_EQ(error_of(floating("    bem:\n      wamit: /nonexistent/hull\n")),
-            "m.yaml:13:14: hydrodynamics.buoy.bem.wamit: /nonexistent/hull.1: cannot open the "
-            "WAMIT file");
+            "m.yaml:13:14: hydrodynamics.buoy.bem.wamit: /nonexistent/hull.1: cannot read the "
+            "WAMIT file: no such file");
   const auto dir = std::filesystem::temp_directory_path() / "seaflex_ocean_loader";
   std::filesystem::create_directories(dir);
   {

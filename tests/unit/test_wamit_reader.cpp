@@ -222,7 +222,7 @@ TEST(WamitReader, MinimalFilesAndSkippedRows) {
 TEST(WamitReader, MissingFirstFile) {
   const auto dir = temp_dir();
   const std::string stem = (dir / "none").string();
-  expect_input_error(stem, {stem + ".1: file: cannot open the WAMIT file"});
+  expect_input_error(stem, {stem + ".1: file: cannot read the WAMIT file: no such file"});
 }
 
 // note: Diagnostic::format prints "file:line:column", so column 0 shows as ":0"

@@ -6,12 +6,12 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/input_file.hpp"
 
 namespace seaflex::hydro {
 
@@ -61,9 +61,11 @@ bool parse(const std::string& token, double& out) {
 // name the column of `columns`; returns (line, values) of the complete rows
 std::vector<std::pair<int, std::vector<double>>> read_rows(
     Problems& p, const std::vector<std::string>& columns) {
-  std::ifstream in(p.file);
-  if (!in) {
-    p.add(0, "file", "cannot open the RAO file");
+  std::istringstream in;
+  try {
+    in.str(read_input_file(p.file, "RAO file", kMaxDataFileBytes, "file"));
+  } catch (const InputError& e) {
+    for (const auto& d : e.diagnostics()) p.add(0, d.key, d.message);
     return {};
   }
   std::vector<std::pair<int, std::vector<double>>> rows;

@@ -6,14 +6,13 @@
 #include <charconv>
 #include <cmath>
 #include <complex>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <stdexcept>
 #include <string_view>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/input_file.hpp"
 
 namespace seaflex::hydro {
 
@@ -35,12 +34,17 @@ struct Problems {
   }
 };
 
+// the lines of a WAMIT file: a regular file of at most kMaxDataFileBytes (core/input_file.hpp)
 std::vector<std::string> read_lines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError({Diagnostic{path, 0, 0, "file", "cannot open the WAMIT file"}});
+  const std::string text = read_input_file(path, "WAMIT file", kMaxDataFileBytes, "file");
   std::vector<std::string> lines;
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(line);
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    lines.emplace_back(text, start, end - start);
+    start = end + 1;
+  }
   return lines;
 }
 
@@ -399,8 +403,9 @@ HydroDatabase read_wamit(const std::string& stem, const WamitUnits& units) {
   HydroDatabase db;
   const std::string path1 = stem + ".1";
   read_radiation(path1, units, db);
-  if (std::filesystem::exists(stem + ".3")) read_excitation(stem + ".3", path1, units, db);
-  if (std::filesystem::exists(stem + ".hst")) read_hydrostatics(stem + ".hst", units, db);
+  // optional files: whatever is there (a directory, a dangling link) is read and reported
+  if (input_file_present(stem + ".3")) read_excitation(stem + ".3", path1, units, db);
+  if (input_file_present(stem + ".hst")) read_hydrostatics(stem + ".hst", units, db);
   return db;
 }
 

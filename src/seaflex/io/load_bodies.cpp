@@ -1,6 +1,8 @@
 // bodies: a mapping of body names to bodies, each with a "type" from the registry.
 #include <fmt/format.h>
 
+#include <numeric>
+
 #include <cmath>
 #include <numbers>
 
@@ -12,9 +14,52 @@
 
 namespace seaflex::io {
 
+bool check_material(MapReader& r, std::optional<double> E, std::optional<double> rho) {
+  bool ok = true;
+  if (E && *E < 1e4) {
+    r.error("youngs_modulus",
+            fmt::format("{:g} Pa is implausibly low; seaflex uses Pa (steel: 2.1e11), "
+                        "not GPa or MPa",
+                        *E));
+    ok = false;
+  }
+  if (rho && *rho < 100.0) {
+    r.error("density",
+            fmt::format("{:g} kg/m^3 is implausibly low; seaflex uses kg/m^3 (steel: 7850), "
+                        "not t/m^3",
+                        *rho));
+    ok = false;
+  }
+  if (rho && *rho > kMaxDensity) {
+    // a unit weight (N/m^3) is the density times g: steel 77,000 N/m^3 = 7850 kg/m^3
+    const double as_density = *rho / kStandardGravity;
+    r.error("density",
+            fmt::format("{:g} kg/m^3 is implausibly high, denser than any material (osmium: "
+                        "22,590 kg/m^3){}; seaflex uses kg/m^3 (steel: 7850)",
+                        *rho,
+                        as_density >= 100.0 && as_density <= kMaxDensity
+                            ? fmt::format(": it looks like a unit weight in N/m^3, the density "
+                                          "times g ({:g} / 9.80665 = {:.4g} kg/m^3)",
+                                          *rho, as_density)
+                            : ""));
+    ok = false;
+  }
+  return ok;
+}
+
 namespace {
 
 constexpr int kMaxElements = 100000;  // per beam: 600k coordinates, ~1 GB of matrices
+
+// a beam is slender: a diameter above its length (often millimetres given as metres) is
+// refused, naming what was probably meant
+bool check_slender(MapReader& r, std::string_view key, double diameter, double length) {
+  if (!(diameter > length)) return true;
+  r.error(key, fmt::format("{:g} m is more than the beam's length ({:g} m): a beam is much longer "
+                           "than its diameter; seaflex uses m, not mm ({:g} mm = {:g} m)",
+                           diameter, length, diameter, diameter / 1000.0));
+  return false;
+}
 
 std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, LoadContext&) {
   bool ok = true;
@@ -104,20 +149,7 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
   BeamSection section;
   const auto E = r.number("youngs_modulus", Need::kRequired, NumberRule::positive("Pa"));
   const auto rho = r.number("density", Need::kRequired, NumberRule::positive("kg/m^3"));
-  if (E && *E < 1e4) {
-    r.error("youngs_modulus",
-            fmt::format("{:g} Pa is implausibly low; seaflex uses Pa (steel: 2.1e11), "
-                        "not GPa or MPa",
-                        *E));
-    ok = false;
-  }
-  if (rho && *rho < 100.0) {
-    r.error("density",
-            fmt::format("{:g} kg/m^3 is implausibly low; seaflex uses kg/m^3 (steel: 7850), "
-                        "not t/m^3",
-                        *rho));
-    ok = false;
-  }
+  if (!check_material(r, E, rho)) ok = false;
   const bool has_od = r.has("outer_diameter"), has_id = r.has("inner_diameter");
   const bool has_area = r.has("area"), has_inertia = r.has("second_moment");
   const bool pipe = has_od || has_id;
@@ -135,6 +167,11 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
               fmt::format("must be smaller than outer_diameter ({:g} m), got {:g} m", *od, *id));
       ok = false;
     }
+    if (od && geometry &&
+        !check_slender(r, "outer_diameter", *od,
+                       std::accumulate(geometry->element_lengths.begin(),
+                                       geometry->element_lengths.end(), 0.0)))
+      ok = false;
     if (od && E && rho && ok) section = BeamSection::pipe(*od, id.value_or(0.0), *E, *rho);
   } else {
     const auto A = r.number("area", Need::kRequired, NumberRule::positive("m^2"));
@@ -336,19 +373,15 @@ void load_bodies(const YAML::Node& node, LoadContext& ctx) {
     }
     const std::string name = kv.first.Scalar();
     bodies.has(name);  // every entry is a body: no unknown keys at this level
-    const std::string path = "bodies." + name;
+    const std::string path = name_key("bodies", name);
     if (name == kGroundName) {
       ctx.diag.error(kv.first.Mark(), path,
                      "'ground' is reserved for the fixed world frame; give the body another name");
       ctx.failed_bodies.push_back(name);
       continue;
     }
-    if (name.empty() || name.find_first_not_of(
-                            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
-                            std::string::npos) {
-      ctx.diag.error(kv.first.Mark(), path,
-                     "body names may use letters, digits, '_' and '-' only (they become output "
-                     "channel names such as <body>.n0.x)");
+    if (const std::string problem = name_problem(name, "body", "<body>.n0.x"); !problem.empty()) {
+      ctx.diag.error(kv.first.Mark(), path, problem);
       ctx.failed_bodies.push_back(name);
       continue;
     }

@@ -132,6 +132,17 @@ struct PairEntry {
 };
 /// The `name` of an entry, checked (letters, digits, '_', '-') and unique among names;
 /// what = "joint" or "connection" for messages.
+/// The longest name of a body, joint, connection or wave probe: 64 characters. Names become
+/// output channel names (CSV column headers) and file names (statics_partial.<beam>.envelope
+/// .csv), which file systems limit to 255 bytes.
+inline constexpr std::size_t kMaxNameLength = 64;
+/// "" for a valid name: 1 to kMaxNameLength letters, digits, '_' and '-' (no comma, quote,
+/// newline or '.', which would break a CSV header or a channel name); otherwise the message.
+/// what: "body", "joint", "wave probe"; channel: an example of the channel ("<body>.n0.x").
+std::string name_problem(const std::string& name, std::string_view what, std::string_view channel);
+/// The key to report a name at: "parent.name", or parent alone when the name is too long
+/// or holds control characters (a newline would split the message).
+std::string name_key(std::string_view parent, const std::string& name);
 std::optional<std::string> read_entry_name(MapReader& r, std::set<std::string>& names,
                                            const char* what);
 PairEntry read_pair(MapReader& r, std::set<std::string>& names, const char* what);
@@ -141,6 +152,14 @@ std::pair<std::unique_ptr<Marker>, std::unique_ptr<Marker>> read_markers(MapRead
                                                                          LoadContext& ctx);
 /// true or false only (absent: false; nullopt after a reported problem).
 std::optional<bool> read_bool(MapReader& r, std::string_view key);
+
+/// The densest material (osmium, 22,590 kg/m^3) with a margin for lumped masses: 30,000
+/// kg/m^3. A larger structural density is a unit mistake (a unit weight in N/m^3).
+inline constexpr double kMaxDensity = 30000.0;
+/// Unit mistakes in the material of a beam or plate, reported at youngs_modulus or density:
+/// a modulus in GPa or MPa (below 1e4 Pa), a density in t/m^3 (below 100 kg/m^3) or a unit
+/// weight in N/m^3 (above kMaxDensity). False when any.
+bool check_material(MapReader& r, std::optional<double> E, std::optional<double> rho);
 
 void load_bodies(const YAML::Node& node, LoadContext& ctx);
 void load_markers(const YAML::Node& node, LoadContext& ctx);

@@ -3,6 +3,7 @@
 // the entries (name, from, to) that joints and connections share.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <numbers>
 #include <set>
 
@@ -31,20 +32,41 @@ JointType joint_type(const std::string& t) {
 
 }  // namespace
 
-bool valid_name(const std::string& s) {
-  return !s.empty() &&
-         s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") ==
-             std::string::npos;
+namespace {
+bool printable(const std::string& s) {
+  return std::none_of(s.begin(), s.end(),
+                      [](char c) { return static_cast<unsigned char>(c) < 32; });
+}
+}  // namespace
+
+std::string name_problem(const std::string& name, std::string_view what, std::string_view channel) {
+  if (name.empty() ||
+      name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") !=
+          std::string::npos)
+    return fmt::format(
+        "{} names may use letters, digits, '_' and '-' only (they become output channel names "
+        "such as {}){}",
+        what, channel,
+        printable(name) && name.size() <= kMaxNameLength ? "" : fmt::format(", got {:?}", name));
+  if (name.size() > kMaxNameLength)
+    return fmt::format(
+        "{} names may have at most {} characters (they become output channel and file names, "
+        "such as {}), got {} characters",
+        what, kMaxNameLength, channel, name.size());
+  return "";
+}
+
+std::string name_key(std::string_view parent, const std::string& name) {
+  if (!printable(name) || name.size() > kMaxNameLength) return std::string(parent);
+  return fmt::format("{}.{}", parent, name);
 }
 
 std::optional<std::string> read_entry_name(MapReader& r, std::set<std::string>& names,
                                            const char* what) {
   const auto name = r.text("name", Need::kRequired);
   if (!name) return std::nullopt;
-  if (!valid_name(*name)) {
-    r.error("name", fmt::format("{} names may use letters, digits, '_' and '-' only (they become "
-                                "output channel names such as <name>.fx)",
-                                what));
+  if (const std::string problem = name_problem(*name, what, "<name>.fx"); !problem.empty()) {
+    r.error("name", problem);
     return std::nullopt;
   }
   if (!names.insert(*name).second) {

@@ -11,10 +11,10 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
+#include "seaflex/core/input_file.hpp"
 #include "seaflex/hydro/rao_motion.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/model/table_motion.hpp"
@@ -69,12 +69,14 @@ std::shared_ptr<const Motion> read_table_file(MapReader& r, std::string_view key
   const auto file = r.text(key, Need::kRequired);
   if (!file) return nullptr;
   const std::string path = resolve(*file, ctx);
-  std::ifstream in(path);
   auto problem = [&](int line, int column, const std::string& column_name, const std::string& m) {
     r.error(key, fmt::format("{}:{}:{}: {}: {}", *file, line, column, column_name, m));
   };
-  if (!in) {
-    r.error(key, fmt::format("cannot open the motion table '{}'", path));
+  std::istringstream in;
+  try {
+    in.str(read_input_file(path, "motion table", kMaxDataFileBytes));
+  } catch (const InputError& e) {
+    for (const auto& d : e.diagnostics()) r.error(key, d.format());
     return nullptr;
   }
   std::vector<double> times;

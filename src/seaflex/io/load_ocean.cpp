@@ -171,6 +171,11 @@ void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
   c.diameter =
       r.number("diameter", od > 0.0 ? Need::kOptional : Need::kRequired, NumberRule::positive("m"))
           .value_or(od);
+  if (c.diameter > beam.length() && !(od > beam.length()))  // od: reported at the body
+    r.error("diameter",
+            fmt::format("{:g} m is more than the beam's length ({:g} m): a beam is much longer "
+                        "than its diameter; seaflex uses m, not mm ({:g} mm = {:g} m)",
+                        c.diameter, beam.length(), c.diameter, c.diameter / 1000.0));
   std::tie(c.cd, c.cd_axial, c.cm, c.ca) = read_morison_coefficients(r);
   if (r.has("buoyancy"))
     c.buoyancy =
@@ -351,6 +356,16 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
     w.error("density", fmt::format("{:g} kg/m^3 is implausibly low for water; seaflex uses "
                                    "kg/m^3 (sea water: 1025), not t/m^3",
                                    *rho_read));
+  // the densest brines are about 1,300 kg/m^3 (the Dead Sea 1,240)
+  if (rho_read && *rho_read > 1500.0)
+    w.error("density",
+            fmt::format("{:g} kg/m^3 is implausibly high for water (the densest brines: about "
+                        "1300 kg/m^3){}; seaflex uses kg/m^3 (sea water: 1025)",
+                        *rho_read,
+                        *rho_read / 1000.0 >= 900.0 && *rho_read / 1000.0 <= 1500.0
+                            ? fmt::format(": it looks like g/m^3 ({:g} g/m^3 = {:g} kg/m^3)",
+                                          *rho_read, *rho_read / 1000.0)
+                            : ""));
   double depth = std::numeric_limits<double>::infinity();
   if (const YAML::Node d = w.get("depth", Need::kRequired, "the water depth in m, or infinite");
       d.IsDefined()) {
@@ -389,6 +404,11 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
       for (const auto& kv : probes) {
         const std::string name = kv.first.as<std::string>();
         pr.has(name);
+        if (const std::string problem = name_problem(name, "wave probe", "wave.eta.<name>");
+            !problem.empty()) {
+          ctx.diag.error(kv.first.Mark(), name_key(pr.path(), name), problem);
+          continue;
+        }
         const YAML::Node& xy = kv.second;
         if (!xy.IsSequence() || xy.size() != 2) {
           ctx.diag.error(xy.Mark(), pr.key_path(name), "expected [x, y] in m");

@@ -128,20 +128,7 @@ std::unique_ptr<Body> build_ancf_plate(MapReader& r, const std::string& name, Lo
   const auto E = r.number("youngs_modulus", Need::kRequired, NumberRule::positive("Pa"));
   const auto nu = r.number("poisson_ratio", Need::kRequired, NumberRule::any(""));
   const auto rho = r.number("density", Need::kRequired, NumberRule::positive("kg/m^3"));
-  if (E && *E < 1e4) {
-    r.error("youngs_modulus",
-            fmt::format("{:g} Pa is implausibly low; seaflex uses Pa (steel: 2.1e11), "
-                        "not GPa or MPa",
-                        *E));
-    ok = false;
-  }
-  if (rho && *rho < 100.0) {
-    r.error("density",
-            fmt::format("{:g} kg/m^3 is implausibly low; seaflex uses kg/m^3 (steel: 7850), "
-                        "not t/m^3",
-                        *rho));
-    ok = false;
-  }
+  if (!check_material(r, E, rho)) ok = false;
   if (nu && !(*nu > -1.0 && *nu < 0.5)) {
     r.error("poisson_ratio",
             fmt::format("must be greater than -1 and less than 0.5 (an isotropic material), "

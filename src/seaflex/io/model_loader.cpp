@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
 
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/constraints/prescribed_coordinates.hpp"
+#include "seaflex/core/input_file.hpp"
 #include "seaflex/forces/gravity.hpp"
 #include "seaflex/forces/rotational_spring.hpp"
 #include "seaflex/forces/spring_damper.hpp"
@@ -255,17 +255,6 @@ Model load(const YAML::Node& root, const std::string& name) {
   return model;
 }
 
-YAML::Node parse(const std::string& text, const std::string& name) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    Diagnostics diag(name);
-    diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
-    diag.throw_if_any();
-  }
-  return {};
-}
-
 }  // namespace
 
 ChannelList model_channels(const Model& model) {
@@ -280,7 +269,7 @@ ChannelList model_channels(const Model& model) {
 }
 
 Model load_model_text(const std::string& text, const std::string& name) {
-  const YAML::Node root = parse(text, name);
+  const YAML::Node root = parse_document(text, name);
   if (!root.IsDefined() || root.IsNull()) {
     Diagnostics diag(name);
     diag.error(YAML::Mark::null_mark(), "", "the model file is empty");
@@ -290,15 +279,9 @@ Model load_model_text(const std::string& text, const std::string& name) {
 }
 
 Model load_model_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    Diagnostics diag(path);
-    diag.error(YAML::Mark::null_mark(), "", "cannot open the model file");
-    diag.throw_if_any();
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return load_model_text(buffer.str(), path);
+  // a regular file of at most kMaxModelFileBytes; InputError "model.yaml: cannot read the
+  // model file: it is a directory" otherwise
+  return load_model_text(read_input_file(path, "model file", kMaxModelFileBytes), path);
 }
 
 }  // namespace seaflex::io

@@ -138,6 +138,15 @@ std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, con
     diag.error(node.Mark(), key, fmt::format("must be a finite number, got '{}'", s));
     return std::nullopt;
   }
+  // lengths and coordinates are bounded, so that their differences and squares stay finite
+  // (a beam from z = -1e308 to 1e308 had an infinite length, "off by nan")
+  if (rule.unit == "m" && std::abs(value) > kMaxLength) {
+    diag.error(node.Mark(), key,
+               fmt::format("{} m is beyond the bound of {:g} m (100,000 km) on lengths and "
+                           "coordinates",
+                           s, kMaxLength));
+    return std::nullopt;
+  }
   const bool low = rule.min_exclusive ? !(value > rule.min) : !(value >= rule.min);
   if (low || value > rule.max) {
     std::string expected;
@@ -348,6 +357,24 @@ void MapReader::finish() {
                   fmt::format("unknown key; {}", suggestion(k, options)));
     }
   }
+}
+
+YAML::Node parse_document(const std::string& text, const std::string& name) {
+  Diagnostics diag(name);
+  try {
+    std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    if (documents.size() > 1)
+      diag.error(documents[1].Mark(), "",
+                 "a second YAML document starts here (after '---' or '...'): seaflex reads one "
+                 "document per file; delete it, with the '---' or '...' before it, or put it in "
+                 "a file of its own");
+    diag.throw_if_any();
+    return documents.empty() ? YAML::Node() : documents.front();
+  } catch (const YAML::ParserException& e) {
+    diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
+    diag.throw_if_any();
+  }
+  return {};
 }
 
 }  // namespace seaflex::io

@@ -113,7 +113,13 @@ class MapReader {
   YAML::Node child(std::string_view key) const;
 };
 
-/// A scalar as a finite double; nullopt (and an error) otherwise.
+/// The bound on the magnitude of every length and coordinate (unit "m"): 1e8 m, beyond any
+/// site's coordinates (UTM northings reach 1e7 m), and small enough that differences and
+/// squares of lengths stay finite.
+inline constexpr double kMaxLength = 1e8;
+
+/// A scalar as a finite double; nullopt (and an error) otherwise. With the unit "m", its
+/// magnitude must not exceed kMaxLength.
 std::optional<double> read_number(Diagnostics& diag, const YAML::Node& node, const std::string& key,
                                   const NumberRule& rule);
 /// A scalar as an int in [min, max].
@@ -124,5 +130,11 @@ std::optional<Vec3> read_vec3(Diagnostics& diag, const YAML::Node& node, const s
                               std::string_view unit);
 /// Short description of a node for messages: its scalar text or its kind.
 std::string describe(const YAML::Node& node);
+
+/// The one YAML document of text (a model or scatter diagram file named file); an undefined
+/// node when the text holds none (empty, or only comments). Throws InputError for a syntax
+/// error, and for a second document (after '---', or '...' and more than comments) at the
+/// line where it starts: yaml-cpp's Load would ignore it silently.
+YAML::Node parse_document(const std::string& text, const std::string& file);
 
 }  // namespace seaflex::io

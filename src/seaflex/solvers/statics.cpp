@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/interrupt.hpp"
 #include "seaflex/solvers/kkt_solver.hpp"
 
 namespace seaflex {
@@ -79,7 +80,7 @@ class NewtonStatics {
     update_ = 0.0;
     last_fall_ = 0.0;
     for (int it = 0; it < s_.max_iterations; ++it) {
-      if (!res.finite) return false;
+      if (!res.finite || interrupt_signal() != 0) return false;  // a signal: see solve_statics
       if (res.force <= s_.tolerance && res.constraint <= c_tol) return true;
       // Levenberg-Marquardt-style regularization of the Newton matrix only (the residual,
       // hence the equilibrium, is untouched): K_ii += eps = 1e-6 F / L (F the largest
@@ -271,6 +272,10 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
     newton.estimate_multipliers(state, increment);
   Residual res;
   while (factor < 1.0) {
+    // SIGINT/SIGTERM (core/interrupt.hpp): stop at the last converged increment, in state
+    if (const int sig = interrupt_signal(); sig != 0)
+      throw Interrupted(
+          sig, fmt::format("in statics after the increment to load factor {:.6g}", factor));
     const double target = std::min(1.0, factor + increment);
     const State saved = state;
     int iterations = 0;
@@ -296,6 +301,7 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
       continue;
     }
     state = saved;
+    if (interrupt_signal() != 0) continue;  // not a failure: the loop's start stops
     const double tried = increment;
     increment *= 0.5;
     if (increment < settings.min_increment) {
