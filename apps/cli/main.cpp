@@ -1,5 +1,6 @@
 // seaflex command line: check, statics, run, modes, bench, plot. Exit codes: 0 success, 2
-// input or usage error, 3 solver failure (results up to the failure stay on disk), 130/143
+// input or usage error, 3 solver failure or a result file that cannot be written (results up
+// to the failure stay on disk, whole rows only), 130/143
 // a run stopped by SIGINT/SIGTERM after its current step (results up to it stay on disk).
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>

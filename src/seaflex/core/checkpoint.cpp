@@ -123,6 +123,12 @@ void CheckpointReader::parse() {
     fail("format", "not a seaflex checkpoint (version 1)");
 }
 
+std::vector<std::string> CheckpointReader::keys() const {
+  std::vector<std::string> list;
+  for (const auto& [key, entry] : entries_) list.push_back(key);
+  return list;
+}
+
 int CheckpointReader::line_of(const std::string& key) const {
   const auto it = entries_.find(key);
   return it == entries_.end() ? 0 : it->second.line;

@@ -47,6 +47,8 @@ class CheckpointReader {
   CheckpointReader(const std::string& text, const std::string& name);
 
   bool has(const std::string& key) const { return entries_.count(key) > 0; }
+  /// Every key, sorted.
+  std::vector<std::string> keys() const;
   std::string text(const std::string& key) const;
   /// Any double (hexadecimal or decimal), infinities and NaN included.
   double number(const std::string& key) const;
