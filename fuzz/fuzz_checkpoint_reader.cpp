@@ -116,6 +116,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     io::StatisticsRecorder stats(directory(), *m.statistics, m.dynamics->duration,
                                  m.dynamics->output_interval, beam_results(m));
     stats.restore(*in, "recorder2");
+    std::vector<std::string> names;  // as the simulation does before its first step
+    for (const auto& c : io::output_channels(m)) names.push_back(c.name);
+    stats.begin(names);
     stats.flush();  // statistics and extremes of the restored accumulators
   });
   return 0;
