@@ -452,8 +452,7 @@ int simulate(Simulation& sim, State& state, const io::Model& model, const fs::pa
     throw;
   } catch (const OutputError&) {
     progress.done();
-    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n",
-                 outputs.names().c_str());
+    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", outputs.names().c_str());
     throw;
   } catch (const Interrupted&) {
     progress.done();
@@ -516,8 +515,8 @@ int cmd_resume(const fs::path& dir, bool quiet) {
     std::error_code ec;
     const auto st = fs::status(file, ec);
     if (!fs::exists(st))
-      in.fail("model", fmt::format("the model file {} is gone: a restart needs the same model",
-                                   file));
+      in.fail("model",
+              fmt::format("the model file {} is gone: a restart needs the same model", file));
     if (!fs::is_regular_file(st))
       in.fail("model", fmt::format("{} is not a regular file (a directory, device or pipe is not "
                                    "a model)",
@@ -602,9 +601,7 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
   cli::clear_mode_shapes(dir);
   const ModalResult modes = solve_modes(*model.system, state, count);
-  std::FILE* out = std::fopen((dir / "modes.csv").c_str(), "w");
-  if (!out) throw InputError({Diagnostic{(dir / "modes.csv").string(), 0, 0, "", "cannot write"}});
-  std::fprintf(out, "mode,frequency_hz,period_s,omega_rad_s,dominant_coordinate,energy_share\n");
+  std::string text = "mode,frequency_hz,period_s,omega_rad_s,dominant_coordinate,energy_share\n";
   if (!quiet)
     fmt::print("{:>5} {:>14} {:>14}  {}\n", "mode", "frequency (Hz)", "period (s)",
                "dominant coordinate (share of kinetic energy)");
@@ -613,12 +610,17 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
     const double T = f > 0 ? 1.0 / f : INFINITY;
     const auto dom = post::dominant_coordinate(modes.shapes.col(k), modes.mass_shapes.col(k));
     const std::string name = model.system->coordinate_name(dom.index);
-    std::fprintf(out, "%ld,%.17g,%.17g,%.17g,%s,%.6g\n", static_cast<long>(k + 1), f, T,
-                 modes.omega[k], name.c_str(), dom.share);
+    char line[512];
+    std::snprintf(line, sizeof line, "%ld,%.17g,%.17g,%.17g,", static_cast<long>(k + 1), f, T,
+                  modes.omega[k]);
+    text += line;
+    text += name;
+    std::snprintf(line, sizeof line, ",%.6g\n", dom.share);
+    text += line;
     if (!quiet)
       fmt::print("{:>5} {:>14.6g} {:>14.6g}  {} ({:.0f} %)\n", k + 1, f, T, name, 100 * dom.share);
   }
-  std::fclose(out);
+  write_file_atomically(dir / "modes.csv", text);  // complete or absent
   cli::write_mode_shapes(model, state, modes, dir, vtk);
   if (!quiet)
     fmt::print("wrote {} and {}{}\n", (dir / "modes.csv").string(),

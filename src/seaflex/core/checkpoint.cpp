@@ -60,7 +60,8 @@ namespace {
 // a word of the file for a message: at most 40 characters, control bytes as '?'
 std::string shown(std::string_view word) {
   std::string out;
-  for (char c : word.substr(0, 40)) out += (static_cast<unsigned char>(c) < 32 || c == 127) ? '?' : c;
+  for (char c : word.substr(0, 40))
+    out += (static_cast<unsigned char>(c) < 32 || c == 127) ? '?' : c;
   if (word.size() > 40) out += "...";
   return out;
 }
@@ -112,9 +113,9 @@ void CheckpointReader::parse() {
       std::string key = text_.substr(k, key_end - k);
       const auto [it, fresh] = entries_.try_emplace(key, Entry{line, key_end, end});
       if (!fresh)
-        throw InputError({Diagnostic{path_, line, 1, shown(key),
-                                     fmt::format("appears twice (first on line {})",
-                                                 it->second.line)}});
+        throw InputError(
+            {Diagnostic{path_, line, 1, shown(key),
+                        fmt::format("appears twice (first on line {})", it->second.line)}});
     }
     pos = end + 1;
   }
@@ -212,8 +213,8 @@ VecX CheckpointReader::vector(const std::string& key) const {
   if (w.empty()) fail(key, "expected a size and numbers, got nothing");
   const long n = parse_count(key, w[0], static_cast<long>(w.size()) - 1);
   if (static_cast<long>(w.size()) != n + 1)
-    fail(key, fmt::format("a size of {} does not match the {} numbers on the line", n,
-                          w.size() - 1));
+    fail(key,
+         fmt::format("a size of {} does not match the {} numbers on the line", n, w.size() - 1));
   VecX v(n);
   for (long i = 0; i < n; ++i) v[i] = parse_number(key, w[static_cast<std::size_t>(i) + 1]);
   return v;
@@ -256,8 +257,9 @@ void CheckpointReader::require_file(const std::string& key, const std::filesyste
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status st = fs::symlink_status(file, ec);
-  const std::string again = "resume needs the files of the run before the checkpoint; start the "
-                            "run again";
+  const std::string again =
+      "resume needs the files of the run before the checkpoint; start the "
+      "run again";
   if (!fs::exists(st)) fail(key, fmt::format("{} is missing: {}", file.string(), again));
   if (fs::is_symlink(st))
     fail(key, fmt::format("{} is a symbolic link (results are never written through a link): {}",

@@ -25,7 +25,8 @@ mode_t file_mode() {
 }
 
 std::string reason(int err) {
-  if (err == ELOOP) return "it is a symbolic link (refused: results are never written through a link)";
+  if (err == ELOOP)
+    return "it is a symbolic link (refused: results are never written through a link)";
   if (err == EFBIG) return fmt::format("{} (the file size limit, ulimit -f)", std::strerror(err));
   if (err == ENOSPC) return fmt::format("{} (the disk is full)", std::strerror(err));
   return std::strerror(err);
@@ -35,8 +36,8 @@ std::string reason(int err) {
 bool write_all(int fd, std::string_view text, off_t offset) {
   std::size_t done = 0;
   while (done < text.size()) {
-    const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done,
-                               offset + static_cast<off_t>(done));
+    const ssize_t n =
+        ::pwrite(fd, text.data() + done, text.size() - done, offset + static_cast<off_t>(done));
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return false;
     if (n == 0) {
@@ -78,7 +79,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view t
 RowFile::RowFile(const std::filesystem::path& path) : path_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd_ < 0) throw OutputError(path, reason(errno));
-  struct stat st{};
+  struct stat st {};
   if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
     close();
     throw OutputError(path, "not a regular file");
@@ -89,7 +90,7 @@ RowFile::RowFile(const std::filesystem::path& path, std::uintmax_t bytes)
     : size_(bytes), path_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC);
   if (fd_ < 0) throw OutputError(path, reason(errno));
-  struct stat st{};
+  struct stat st {};
   if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
     close();
     throw OutputError(path, "not a regular file");

@@ -6,7 +6,6 @@
 
 namespace seaflex::io {
 
-
 std::vector<std::filesystem::path> BeamCsvRecorder::files(
     const std::filesystem::path& dir, const std::string& prefix,
     const std::vector<const AncfBeam*>& beams) {

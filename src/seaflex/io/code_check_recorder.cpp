@@ -1,11 +1,8 @@
 #include "seaflex/io/code_check_recorder.hpp"
 
-#include <exception>
-
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <cstring>
+#include <exception>
 #include <stdexcept>
 
 #include "seaflex/core/output_file.hpp"

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/io/design_settings.hpp"
 #include "seaflex/post/beam_results.hpp"
 #include "seaflex/post/fatigue_damage.hpp"
-#include "seaflex/core/output_file.hpp"
 #include "seaflex/simulation/recorder.hpp"
 
 namespace seaflex::io {

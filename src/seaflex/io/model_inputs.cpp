@@ -27,8 +27,8 @@ constexpr long kMaxNodes = 1000000;
 void collect(const YAML::Node& node, const std::string& key, const fs::path& dir,
              std::set<std::string>& files, long& visited, const std::string& model) {
   if (++visited > kMaxNodes)
-    refuse(model, "", fmt::format("more than {} YAML nodes: too large to list its input files",
-                                  kMaxNodes));
+    refuse(model, "",
+           fmt::format("more than {} YAML nodes: too large to list its input files", kMaxNodes));
   if (node.IsMap()) {
     for (const auto& kv : node)
       collect(kv.second, kv.first.IsScalar() ? kv.first.Scalar() : "", dir, files, visited, model);

@@ -2,11 +2,9 @@
 
 #include <fmt/format.h>
 
-
 #include "seaflex/post/plate_results.hpp"
 
 namespace seaflex::io {
-
 
 std::vector<std::filesystem::path> PlateCsvRecorder::files(
     const std::filesystem::path& dir, const std::string& prefix,
@@ -32,8 +30,7 @@ void PlateCsvRecorder::begin(const std::vector<std::string>&) {
   for (const auto& q : post::plate_quantities())
     fmt::format_to(std::back_inserter(line_), ",{}", q.name);
   line_ += '\n';
-  for (auto& p : plates_)
-    p.file.append(line_);
+  for (auto& p : plates_) p.file.append(line_);
 }
 
 void PlateCsvRecorder::record(const State& state, std::span<const double>) {

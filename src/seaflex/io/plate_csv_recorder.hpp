@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "seaflex/elements/ancf_plate.hpp"
 #include "seaflex/core/output_file.hpp"
+#include "seaflex/elements/ancf_plate.hpp"
 #include "seaflex/simulation/recorder.hpp"
 
 namespace seaflex::io {

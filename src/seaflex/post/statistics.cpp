@@ -134,8 +134,7 @@ void StatisticsAccumulator::restore(const std::vector<double>& saved) {
   if (saved.size() < kHeader) throw std::invalid_argument("statistics: a short saved state");
   // a damaged state must not become a huge or negative count (a cast of NaN or 1e300 to an
   // integer is undefined)
-  if (saved[11] != static_cast<double>(blocks_.size()) ||
-      saved.size() < kHeader + blocks_.size())
+  if (saved[11] != static_cast<double>(blocks_.size()) || saved.size() < kHeader + blocks_.size())
     throw std::invalid_argument("statistics: the saved state has another number of blocks");
   const auto blocks = blocks_.size();
   if (!(saved[0] >= 0.0 && saved[0] <= 9e15 && saved[0] == std::floor(saved[0])))
