@@ -12,6 +12,7 @@
 
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/input_file.hpp"
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/io/yaml_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -214,14 +215,14 @@ int cmd_fatigue(const std::string& file, const std::string& dir,
       }
     }
     const fs::path out = fs::path(dir) / (beam + ".fatigue_total.csv");
-    std::ofstream(out) << text;
+    write_file_atomically(out, text);  // complete or absent, never through a planted link
     report += fmt::format("wrote {}\n", out.string());
   }
   std::string cases_csv = "name,hs,tp,heading,probability,folder\n";
   for (const auto& c : cases)
     fmt::format_to(std::back_inserter(cases_csv), "{},{:.17g},{:.17g},{:.17g},{:.17g},{}\n", c.name,
                    c.hs, c.tp, c.heading, c.probability / sum, c.folder);
-  std::ofstream(fs::path(dir) / "fatigue_cases.csv") << cases_csv;
+  write_file_atomically(fs::path(dir) / "fatigue_cases.csv", cases_csv);
   fmt::print("{}fatigue: {} load cases; shortest life {:.4g} years at {}\n", report, cases.size(),
              worst_life, worst_at);
   return 0;

@@ -1,5 +1,6 @@
 // seaflex command line: check, statics, run, modes, bench, plot. Exit codes: 0 success, 2
-// input or usage error, 3 solver failure (results up to the failure stay on disk), 130/143
+// input or usage error, 3 solver failure or a result file that cannot be written (results up
+// to the failure stay on disk, whole rows only), 130/143
 // a run stopped by SIGINT/SIGTERM after its current step (results up to it stay on disk).
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -20,11 +21,13 @@
 #include "seaflex/core/checkpoint.hpp"
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/interrupt.hpp"
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/core/parallel.hpp"
 #include "seaflex/io/beam_csv_recorder.hpp"
 #include "seaflex/io/csv_recorder.hpp"
 #include "seaflex/io/design_recorders.hpp"
 #include "seaflex/io/hdf5_recorder.hpp"
+#include "seaflex/io/model_inputs.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/output_selection.hpp"
 #include "seaflex/io/plate_csv_recorder.hpp"
@@ -56,7 +59,7 @@ void make_output_dir(const fs::path& dir) {
 // The recorders of one output stem ("statics", "timeseries"): CSV and/or HDF5 files of
 // the channels, and the beam results along the length (CSV: <prefix><beam>.along.csv and
 // .envelope.csv; HDF5: inside <stem>.h5).
-class Outputs {
+class Outputs : public Recorder {
  public:
   /// resume: continue the files of a checkpointed run (CSV only; see restore()).
   Outputs(const io::Model& model, const fs::path& dir, const std::string& stem, bool envelopes,
@@ -99,8 +102,30 @@ class Outputs {
           std::make_unique<io::VtkRecorder>(dir, stem, beam_results(), io::output_plates(model),
                                             io::output_rigid_bodies(model), io::sea_surface(model));
   }
-  void attach(Simulation& sim) {
-    for (Recorder* r : recorders()) sim.add_recorder(*r);
+  /// The simulation feeds every recorder through this one (flush() below).
+  void attach(Simulation& sim) { sim.add_recorder(*this); }
+  void begin(const std::vector<std::string>& channels) override {
+    for (Recorder* r : recorders()) r->begin(channels);
+  }
+  void record(const State& state, std::span<const double> values) override {
+    for (Recorder* r : recorders()) r->record(state, values);
+  }
+  /// Flushes every recorder, also when one fails (a full disk fails them all): each file
+  /// is then complete or reported. The first failure is thrown, the others printed; when a
+  /// failure is already on its way (the simulation flushes before it rethrows), that one is
+  /// reported and these are only printed.
+  void flush() override {
+    const bool failing = std::current_exception() != nullptr;  // inside a handler
+    std::exception_ptr first;
+    for (Recorder* r : recorders()) {
+      try {
+        r->flush();
+      } catch (const std::exception& e) {
+        if (first || failing) std::fprintf(stderr, "seaflex: %s\n", e.what());
+        if (!first) first = std::current_exception();
+      }
+    }
+    if (first && !failing) std::rethrow_exception(first);
   }
   /// One row (statics): begin, record, flush.
   void write_row(const ChannelList& channels, const State& state) {
@@ -110,11 +135,14 @@ class Outputs {
       names.push_back(c.name);
       values.push_back(c.value(state));
     }
-    for (Recorder* r : recorders()) {
-      r->begin(names);
-      r->record(state, values);
-      r->flush();
+    try {
+      begin(names);
+      record(state, values);
+    } catch (...) {
+      flush();
+      throw;
     }
+    flush();
   }
   /// "DIR/<stem>.csv" (and/or .h5): the files of the channels, for messages.
   static std::string describe(const io::Model& model, const fs::path& dir,
@@ -126,13 +154,13 @@ class Outputs {
     return (dir / fmt::format("{}.{}", stem, f == io::OutputFormat::kCsv ? "csv" : "h5")).string();
   }
   /// Restart files: the position of every recorder; false when one cannot continue a run.
-  bool save(CheckpointWriter& out) {
+  bool save_all(CheckpointWriter& out) {
     const auto list = recorders();
     for (std::size_t k = 0; k < list.size(); ++k)
       if (!list[k]->save(out, fmt::format("recorder{}", k))) return false;
     return true;
   }
-  void restore(const CheckpointReader& in) {
+  void restore_all(const CheckpointReader& in) {
     const auto list = recorders();
     for (std::size_t k = 0; k < list.size(); ++k)
       list[k]->restore(in, fmt::format("recorder{}", k));
@@ -313,27 +341,37 @@ int cmd_statics(const std::string& file, const fs::path& dir, bool quiet,
   return 0;
 }
 
-// Restart files: FNV-1a of the model file (a resumed run refuses a changed model), and
-// text as hex (a path with blanks stays one word).
-std::string fnv1a(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-  return fmt::format("{:016x}", h);
-}
+// Restart files: paths as hex (a path with blanks stays one word).
 std::string to_hex(const std::string& text) {
   std::string out;
   for (unsigned char c : text) out += fmt::format("{:02x}", c);
   return out;
 }
-std::string from_hex(const std::string& hex) {
+// the text of `key`, written by to_hex; a located error for anything else
+std::string from_hex(const CheckpointReader& in, const std::string& key) {
+  const std::string hex = in.text(key);
+  const auto digit = [](char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;
+  };
   std::string out;
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
-    out += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
+    const int hi = digit(hex[i]), lo = digit(hex[i + 1]);
+    if (hi < 0 || lo < 0 || (hi == 0 && lo == 0)) break;
+    out += static_cast<char>(hi * 16 + lo);
+  }
+  if (out.size() * 2 != hex.size() || out.empty())
+    in.fail(key, "not a file name written by seaflex (pairs of lowercase hex digits)");
   return out;
 }
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+
+// The files a checkpoint holds the hash of: the model, then every file it reads.
+std::vector<std::pair<std::string, std::string>> input_hashes(const std::string& model) {
+  std::vector<std::pair<std::string, std::string>> list;
+  for (const auto& f : io::model_input_files(model))
+    list.emplace_back(f, io::input_file_hash(f, "input file"));
+  return list;
 }
 
 // A model or output that a restart file cannot hold yet is refused before anything runs.
@@ -359,13 +397,19 @@ void enable_checkpoints(Simulation& sim, const std::string& file, const fs::path
                         Integrator& integrator, Outputs& outputs,
                         const cli::ProgressLine& progress) {
   const std::string model_path = fs::absolute(file).string();
-  const std::string hash = fnv1a(file_text(file));
+  const std::string hash = io::input_file_hash(file, "model");
+  const auto inputs = input_hashes(file);  // WAMIT files, tables: a resume needs the same
   sim.set_checkpoint(rows, [=, &integrator, &outputs, &progress](const State& state,
                                                                  const SimulationPosition& pos) {
     CheckpointWriter w;
     w.put("format", std::string("seaflex-checkpoint-1"));
     w.put("model", to_hex(model_path));
     w.put("model_hash", hash);
+    w.put("inputs", static_cast<long>(inputs.size()));
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+      w.put(fmt::format("input{}.file", k), to_hex(inputs[k].first));
+      w.put(fmt::format("input{}.hash", k), inputs[k].second);
+    }
     w.put("checkpoint_rows", rows);
     w.put("wall_s", progress.elapsed());  // the whole run's, so far
     pos.save(w);
@@ -374,7 +418,7 @@ void enable_checkpoints(Simulation& sim, const std::string& file, const fs::path
     w.put("state.v", state.v);
     w.put("state.lambda", state.lambda);
     w.put("state.z", state.z);
-    if (!integrator.save(w) || !outputs.save(w))
+    if (!integrator.save(w) || !outputs.save_all(w))
       throw std::runtime_error("this run cannot be checkpointed");
     w.write((dir / "checkpoint.txt").string());
   });
@@ -414,6 +458,10 @@ int simulate(Simulation& sim, State& state, const io::Model& model, const fs::pa
     fmt::print("wrote {}\n", Outputs::describe(model, dir, "timeseries"));
     fmt::print("{}", outputs.design_summary());
   } catch (const SolverError&) {
+    progress.done();
+    std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", outputs.names().c_str());
+    throw;
+  } catch (const OutputError&) {
     progress.done();
     std::fprintf(stderr, "seaflex: results up to the failure are in %s\n", outputs.names().c_str());
     throw;
@@ -472,12 +520,45 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
 int cmd_resume(const fs::path& dir, bool quiet) {
   const std::string path = (dir / "checkpoint.txt").string();
   const CheckpointReader in(path);
-  const std::string file = from_hex(in.text("model"));
-  if (fnv1a(file_text(file)) != in.text("model_hash"))
-    throw InputError({Diagnostic{path, 0, 0, "model",
-                                 fmt::format("the model file {} changed since the checkpoint "
-                                             "(or is gone): a restart needs the same model",
-                                             file)}});
+  const std::string file = from_hex(in, "model");
+  {
+    // a regular file of bounded size (not /dev/zero, a FIFO or a directory), unchanged
+    std::error_code ec;
+    const auto st = fs::status(file, ec);
+    if (!fs::exists(st))
+      in.fail("model",
+              fmt::format("the model file {} is gone: a restart needs the same model", file));
+    if (!fs::is_regular_file(st))
+      in.fail("model", fmt::format("{} is not a regular file (a directory, device or pipe is not "
+                                   "a model)",
+                                   file));
+    if (fs::file_size(file, ec) > io::kMaxInputFileBytes || ec)
+      in.fail("model", fmt::format("{} has more than {} bytes", file, io::kMaxInputFileBytes));
+    if (io::input_file_hash(file, "model") != in.text("model_hash"))
+      in.fail("model", fmt::format("the model file {} changed since the checkpoint (or is gone): "
+                                   "a restart needs the same model",
+                                   file));
+  }
+  // every file the model reads, as at the checkpoint (a checkpoint of an older seaflex
+  // without the list is refused: it could not tell)
+  const long inputs = in.integer("inputs", 0, 100000);
+  std::vector<std::string> recorded;
+  for (long k = 0; k < inputs; ++k) {
+    const std::string key = fmt::format("input{}.file", k);
+    const std::string f = from_hex(in, key);
+    const std::string hash = io::input_file_hash(f, key);
+    if (hash != in.text(fmt::format("input{}.hash", k)))
+      in.fail(key, fmt::format("the input file {} {} since the checkpoint: a restart needs the "
+                               "same inputs",
+                               f, hash == "absent" ? "is gone" : "changed"));
+    recorded.push_back(f);
+  }
+  if (const auto now = io::model_input_files(file); now != recorded)
+    for (const auto& f : now)
+      if (std::find(recorded.begin(), recorded.end(), f) == recorded.end())
+        in.fail("inputs", fmt::format("the model reads {}, which was not there at the checkpoint: "
+                                      "a restart needs the same inputs",
+                                      f));
   OutputOptions options;
   options.format = "csv";
   const io::Model model = load_model(file, options);
@@ -485,27 +566,39 @@ int cmd_resume(const fs::path& dir, bool quiet) {
     throw InputError({Diagnostic{file, 0, 0, "dynamics", "the model has no dynamics section"}});
   check_checkpointable(model, file);
   const auto& d = *model.dynamics;
+  // the time loop's position: bounded, so that a damaged file cannot run for ever
+  const long nominal = std::lround(d.duration / d.time_step);
+  in.integer("sim.ticks", 0, nominal << 20);  // at most 2^20 ticks per step (adaptive)
+  in.integer("sim.level", 0, 20);
+  in.integer("sim.successes", 0);
+  in.integer("sim.rows", 1, nominal + 1);
+  for (const char* key : {"sim.t0", "sim.scale", "state.t", "sim.min_step"}) in.finite(key);
+  for (const char* key : {"sim.steps", "sim.rejected_steps", "sim.iterations"}) in.integer(key, 0);
+  const long checkpoint_rows = in.integer("checkpoint_rows", 1, nominal);
   auto integrator = d.make_integrator();
   Simulation sim(*model.system, io::output_channels(model), *integrator, d.simulation());
   Outputs outputs(model, dir, "timeseries", true, /*resume=*/true);
-  outputs.restore(in);
+  outputs.restore_all(in);
   outputs.attach(sim);
-  State state = model.system->initial_state();
-  state.t = in.number("state.t");
-  state.q = in.vector("state.q");
-  state.v = in.vector("state.v");
-  state.lambda = in.vector("state.lambda");
-  state.z = in.vector("state.z");
-  if (state.q.size() != model.system->num_coordinates() ||
-      state.lambda.size() != model.system->num_constraints())
-    throw InputError({Diagnostic{path, 0, 0, "state", "the checkpoint is for another model"}});
-  integrator->restore(*model.system, in);
+  // the state: every vector the size this model needs
+  const State initial = model.system->initial_state();
+  State state = initial;
+  state.t = in.finite("state.t");
+  state.q = in.vector("state.q", initial.q.size());
+  state.v = in.vector("state.v", initial.v.size());
+  state.lambda = in.vector("state.lambda", initial.lambda.size());
+  state.z = in.vector("state.z", initial.z.size());
+  try {
+    integrator->restore(*model.system, in);
+  } catch (const std::invalid_argument& e) {
+    in.fail("", e.what());
+  }
   const SimulationPosition pos = SimulationPosition::load(in);
   // the progress line and the summary count the whole run: the wall time before the
   // checkpoint, and the fraction of the run done then
-  cli::ProgressLine progress(quiet, in.has("wall_s") ? in.number("wall_s") : 0.0,
+  cli::ProgressLine progress(quiet, in.has("wall_s") ? in.finite("wall_s") : 0.0,
                              (state.t - pos.t0) / d.duration);
-  enable_checkpoints(sim, file, dir, in.integer("checkpoint_rows"), *integrator, outputs, progress);
+  enable_checkpoints(sim, file, dir, checkpoint_rows, *integrator, outputs, progress);
   if (!quiet) fmt::print("resuming {} at t = {:g} s\n", file, state.t);
   return simulate(sim, state, model, dir, outputs, quiet, &pos, progress);
 }
@@ -519,9 +612,7 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
   cli::clear_mode_shapes(dir);
   const ModalResult modes = solve_modes(*model.system, state, count);
-  std::FILE* out = std::fopen((dir / "modes.csv").c_str(), "w");
-  if (!out) throw InputError({Diagnostic{(dir / "modes.csv").string(), 0, 0, "", "cannot write"}});
-  std::fprintf(out, "mode,frequency_hz,period_s,omega_rad_s,dominant_coordinate,energy_share\n");
+  std::string text = "mode,frequency_hz,period_s,omega_rad_s,dominant_coordinate,energy_share\n";
   if (!quiet)
     fmt::print("{:>5} {:>14} {:>14}  {}\n", "mode", "frequency (Hz)", "period (s)",
                "dominant coordinate (share of kinetic energy)");
@@ -530,12 +621,17 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
     const double T = f > 0 ? 1.0 / f : INFINITY;
     const auto dom = post::dominant_coordinate(modes.shapes.col(k), modes.mass_shapes.col(k));
     const std::string name = model.system->coordinate_name(dom.index);
-    std::fprintf(out, "%ld,%.17g,%.17g,%.17g,%s,%.6g\n", static_cast<long>(k + 1), f, T,
-                 modes.omega[k], name.c_str(), dom.share);
+    char line[512];
+    std::snprintf(line, sizeof line, "%ld,%.17g,%.17g,%.17g,", static_cast<long>(k + 1), f, T,
+                  modes.omega[k]);
+    text += line;
+    text += name;
+    std::snprintf(line, sizeof line, ",%.6g\n", dom.share);
+    text += line;
     if (!quiet)
       fmt::print("{:>5} {:>14.6g} {:>14.6g}  {} ({:.0f} %)\n", k + 1, f, T, name, 100 * dom.share);
   }
-  std::fclose(out);
+  write_file_atomically(dir / "modes.csv", text);  // complete or absent
   cli::write_mode_shapes(model, state, modes, dir, vtk);
   if (!quiet)
     fmt::print("wrote {} and {}{}\n", (dir / "modes.csv").string(),
@@ -734,6 +830,10 @@ int main(int argc, char** argv) {
     return kExitInput;
   } catch (const SolverError& e) {
     std::fprintf(stderr, "seaflex: solver failure: %s\n", e.what());
+    return kExitSolver;
+  } catch (const OutputError& e) {
+    // disk full, a file size limit: every file is complete up to its last whole row
+    std::fprintf(stderr, "seaflex: %s\n", e.what());
     return kExitSolver;
   } catch (const Interrupted& e) {
     std::fprintf(stderr, "seaflex: %s\n", e.what());

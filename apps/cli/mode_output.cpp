@@ -9,6 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/io/output_selection.hpp"
 #include "seaflex/io/vtk_recorder.hpp"
 
@@ -59,10 +60,7 @@ void write_mode_shapes(const io::Model& model, const State& state, const ModalRe
       fmt::format_to(std::back_inserter(text), ",{:.17g}", modes.shapes(i, k));
     text += '\n';
   }
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f || std::fputs(text.c_str(), f) < 0 || std::fclose(f) != 0)
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+  write_file_atomically(path, text);  // complete or absent, never through a planted link
   if (!vtk) return;
   const std::vector<Index> positions = position_coordinates(model);
   Eigen::AlignedBox<double, 3> box;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include <stdexcept>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/core/output_file.hpp"
 
 namespace seaflex {
 
@@ -50,80 +52,226 @@ void CheckpointWriter::put(const std::string& key, const MatX& values) {
 }
 
 void CheckpointWriter::write(const std::string& path) const {
-  const std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error(fmt::format("{}: cannot write: {}", tmp, std::strerror(errno)));
-  const bool ok = std::fwrite(text_.data(), 1, text_.size(), f) == text_.size();
-  if (std::fclose(f) != 0 || !ok)
-    throw std::runtime_error(fmt::format("{}: cannot write the checkpoint", tmp));
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(fmt::format("{}: cannot rename to {}", tmp, path));
+  write_file_atomically(path, text_);
 }
+
+namespace {
+
+// a word of the file for a message: at most 40 characters, control bytes as '?'
+std::string shown(std::string_view word) {
+  std::string out;
+  for (char c : word.substr(0, 40))
+    out += (static_cast<unsigned char>(c) < 32 || c == 127) ? '?' : c;
+  if (word.size() > 40) out += "...";
+  return out;
+}
+
+bool blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
+
+}  // namespace
 
 CheckpointReader::CheckpointReader(const std::string& path) : path_(path) {
-  std::ifstream in(path);
-  if (!in)
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st))
     bad(path, "", "cannot open the checkpoint (write one with seaflex run --checkpoint-every T)");
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string key, w;
-    if (!(words >> key)) continue;
-    std::vector<std::string> list;
-    while (words >> w) list.push_back(w);
-    entries_[key] = std::move(list);
-  }
-  if (text("format") != "seaflex-checkpoint-1")
-    bad(path, "format", "not a seaflex checkpoint (version 1)");
+  if (!fs::is_regular_file(st))
+    bad(path, "", "not a regular file (a directory, device or pipe is not a checkpoint)");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) bad(path, "", fmt::format("cannot read the checkpoint: {}", ec.message()));
+  if (size > kMaxBytes)
+    bad(path, "",
+        fmt::format("{} bytes, more than the limit of {} bytes for a checkpoint", size, kMaxBytes));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) bad(path, "", fmt::format("cannot open the checkpoint: {}", std::strerror(errno)));
+  text_.resize(static_cast<std::size_t>(size));
+  in.read(text_.data(), static_cast<std::streamsize>(size));
+  text_.resize(static_cast<std::size_t>(in.gcount()));  // a file that shrank meanwhile
+  parse();
 }
 
-const std::vector<std::string>& CheckpointReader::words(const std::string& key) const {
+CheckpointReader::CheckpointReader(const std::string& text, const std::string& name)
+    : path_(name), text_(text) {
+  parse();
+}
+
+void CheckpointReader::parse() {
+  int line = 0;
+  std::size_t pos = 0;
+  while (pos < text_.size()) {
+    ++line;
+    std::size_t end = text_.find('\n', pos);
+    if (end == std::string::npos) end = text_.size();
+    std::size_t k = pos;
+    while (k < end && blank(text_[k])) ++k;
+    std::size_t key_end = k;
+    while (key_end < end && !blank(text_[key_end])) ++key_end;
+    if (key_end > k) {
+      std::string key = text_.substr(k, key_end - k);
+      const auto [it, fresh] = entries_.try_emplace(key, Entry{line, key_end, end});
+      if (!fresh)
+        throw InputError(
+            {Diagnostic{path_, line, 1, shown(key),
+                        fmt::format("appears twice (first on line {})", it->second.line)}});
+    }
+    pos = end + 1;
+  }
+  if (!has("format")) bad(path_, "format", "not a seaflex checkpoint (no format line)");
+  if (text("format") != "seaflex-checkpoint-1")
+    fail("format", "not a seaflex checkpoint (version 1)");
+}
+
+std::vector<std::string> CheckpointReader::keys() const {
+  std::vector<std::string> list;
+  for (const auto& [key, entry] : entries_) list.push_back(key);
+  return list;
+}
+
+int CheckpointReader::line_of(const std::string& key) const {
+  const auto it = entries_.find(key);
+  return it == entries_.end() ? 0 : it->second.line;
+}
+
+void CheckpointReader::fail(const std::string& key, const std::string& message) const {
+  const int line = line_of(key);
+  throw InputError({Diagnostic{path_, line, line > 0 ? 1 : 0, key, message}});
+}
+
+std::vector<std::string_view> CheckpointReader::words(const std::string& key) const {
   const auto it = entries_.find(key);
   if (it == entries_.end()) bad(path_, key, "missing from the checkpoint");
-  return it->second;
+  std::vector<std::string_view> list;
+  const std::string_view all(text_.data() + it->second.begin, it->second.end - it->second.begin);
+  std::size_t k = 0;
+  while (k < all.size()) {
+    while (k < all.size() && blank(all[k])) ++k;
+    std::size_t e = k;
+    while (e < all.size() && !blank(all[e])) ++e;
+    if (e > k) list.push_back(all.substr(k, e - k));
+    k = e;
+  }
+  return list;
 }
 
 std::string CheckpointReader::text(const std::string& key) const {
-  const auto& w = words(key);
-  if (w.size() != 1) bad(path_, key, "expected one word");
-  return w[0];
+  const auto w = words(key);
+  if (w.size() != 1) fail(key, fmt::format("expected one word, got {}", w.size()));
+  return std::string(w[0]);
 }
 
-double CheckpointReader::number(const std::string& key) const {
-  const std::string w = text(key);
+double CheckpointReader::parse_number(const std::string& key, std::string_view word) const {
+  const std::string w(word);
   char* end = nullptr;
   const double x = std::strtod(w.c_str(), &end);
-  if (end == w.c_str() || *end != '\0') bad(path_, key, fmt::format("not a number: '{}'", w));
+  if (w.empty() || end != w.c_str() + w.size())
+    fail(key, fmt::format("not a number: '{}'", shown(word)));
   return x;
 }
 
-long CheckpointReader::integer(const std::string& key) const {
-  const std::string w = text(key);
+long CheckpointReader::parse_count(const std::string& key, std::string_view word, long max) const {
+  const std::string w(word);
   char* end = nullptr;
-  const long x = std::strtol(w.c_str(), &end, 10);
-  if (end == w.c_str() || *end != '\0') bad(path_, key, fmt::format("not an integer: '{}'", w));
+  errno = 0;
+  const long n = std::strtol(w.c_str(), &end, 10);
+  if (w.empty() || end != w.c_str() + w.size() || errno == ERANGE)
+    fail(key, fmt::format("not a whole number: '{}'", shown(word)));
+  if (n < 0 || n > max)
+    fail(key, fmt::format("a size of {} does not match the {} numbers on the line", n, max));
+  return n;
+}
+
+double CheckpointReader::number(const std::string& key) const {
+  const auto w = words(key);
+  if (w.size() != 1) fail(key, fmt::format("expected one number, got {} words", w.size()));
+  return parse_number(key, w[0]);
+}
+
+double CheckpointReader::finite(const std::string& key) const {
+  const double x = number(key);
+  if (!std::isfinite(x)) fail(key, fmt::format("must be finite, got {}", x));
+  return x;
+}
+
+long CheckpointReader::integer(const std::string& key, long lo, long hi) const {
+  const auto w = words(key);
+  if (w.size() != 1) fail(key, fmt::format("expected one whole number, got {} words", w.size()));
+  const std::string s(w[0]);
+  char* end = nullptr;
+  errno = 0;
+  const long x = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE)
+    fail(key, fmt::format("not a whole number: '{}'", shown(w[0])));
+  if (x < lo || x > hi) fail(key, fmt::format("must be from {} to {}, got {}", lo, hi, x));
   return x;
 }
 
 VecX CheckpointReader::vector(const std::string& key) const {
-  const auto& w = words(key);
-  const long n = w.empty() ? -1 : std::strtol(w[0].c_str(), nullptr, 10);
-  if (n < 0 || static_cast<long>(w.size()) != n + 1) bad(path_, key, "malformed vector");
+  const auto w = words(key);
+  if (w.empty()) fail(key, "expected a size and numbers, got nothing");
+  const long n = parse_count(key, w[0], static_cast<long>(w.size()) - 1);
+  if (static_cast<long>(w.size()) != n + 1)
+    fail(key,
+         fmt::format("a size of {} does not match the {} numbers on the line", n, w.size() - 1));
   VecX v(n);
-  for (long i = 0; i < n; ++i) v[i] = std::strtod(w[i + 1].c_str(), nullptr);
+  for (long i = 0; i < n; ++i) v[i] = parse_number(key, w[static_cast<std::size_t>(i) + 1]);
   return v;
 }
 
+VecX CheckpointReader::vector(const std::string& key, Index size) const {
+  const auto w = words(key);
+  if (!w.empty() && w[0] != std::to_string(size))
+    fail(key, fmt::format("has {} entries where the model has {}: the checkpoint is for another "
+                          "model or damaged",
+                          shown(w[0]), size));
+  return vector(key);
+}
+
 MatX CheckpointReader::matrix(const std::string& key) const {
-  const auto& w = words(key);
-  const long r = w.size() >= 2 ? std::strtol(w[0].c_str(), nullptr, 10) : -1;
-  const long c = w.size() >= 2 ? std::strtol(w[1].c_str(), nullptr, 10) : -1;
-  if (r < 0 || c < 0 || static_cast<long>(w.size()) != r * c + 2)
-    bad(path_, key, "malformed matrix");
+  const auto w = words(key);
+  if (w.size() < 2) fail(key, "expected rows, columns and numbers");
+  const long max = static_cast<long>(w.size()) - 2;
+  const long r = parse_count(key, w[0], max), c = parse_count(key, w[1], max);
+  if (r * c != max)
+    fail(key, fmt::format("{} x {} does not match the {} numbers on the line", r, c, max));
   MatX m(r, c);
   for (long j = 0; j < c; ++j)
-    for (long i = 0; i < r; ++i) m(i, j) = std::strtod(w[2 + j * r + i].c_str(), nullptr);
+    for (long i = 0; i < r; ++i)
+      m(i, j) = parse_number(key, w[static_cast<std::size_t>(2 + j * r + i)]);
   return m;
+}
+
+MatX CheckpointReader::matrix(const std::string& key, Index rows, Index cols) const {
+  const auto w = words(key);
+  if (w.size() >= 2 && (w[0] != std::to_string(rows) || w[1] != std::to_string(cols)))
+    fail(key, fmt::format("is {} x {} where the model needs {} x {}: the checkpoint is for "
+                          "another model or damaged",
+                          shown(w[0]), shown(w[1]), rows, cols));
+  return matrix(key);
+}
+
+void CheckpointReader::require_file(const std::string& key, const std::filesystem::path& file,
+                                    std::uintmax_t bytes) const {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(file, ec);
+  const std::string again =
+      "resume needs the files of the run before the checkpoint; start the "
+      "run again";
+  if (!fs::exists(st)) fail(key, fmt::format("{} is missing: {}", file.string(), again));
+  if (fs::is_symlink(st))
+    fail(key, fmt::format("{} is a symbolic link (results are never written through a link): {}",
+                          file.string(), again));
+  if (!fs::is_regular_file(st))
+    fail(key, fmt::format("{} is not a regular file: {}", file.string(), again));
+  const std::uintmax_t size = fs::file_size(file, ec);
+  if (ec) fail(key, fmt::format("{}: {}", file.string(), ec.message()));
+  if (size < bytes)
+    fail(key, fmt::format("{} has {} bytes, fewer than the {} it had at the checkpoint: it was cut "
+                          "or replaced; {}",
+                          file.string(), size, bytes, again));
 }
 
 }  // namespace seaflex

@@ -2,29 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
+#include <exception>
 
 namespace seaflex::io {
-
-namespace {
-
-std::FILE* open_or_throw(const std::filesystem::path& path, const char* mode = "w") {
-  std::FILE* f = std::fopen(path.c_str(), mode);
-  if (!f)
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-  return f;
-}
-
-void put_or_throw(const std::string& text, std::FILE* f, const std::filesystem::path& path) {
-  if (std::fputs(text.c_str(), f) < 0 || std::fflush(f) != 0)
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-}
-
-}  // namespace
 
 std::vector<std::filesystem::path> BeamCsvRecorder::files(
     const std::filesystem::path& dir, const std::string& prefix,
@@ -45,17 +25,11 @@ BeamCsvRecorder::BeamCsvRecorder(const std::filesystem::path& dir, const std::st
     const std::string name = r.beam().name();
     beams_.push_back({std::move(r),
                       {},
-                      nullptr,
+                      {},
                       dir / fmt::format("{}{}.along.csv", prefix, name),
                       dir / fmt::format("{}{}.envelope.csv", prefix, name)});
-    if (per_row_)
-      beams_.back().along = open_or_throw(beams_.back().along_path, resume ? "ab" : "w");
+    if (per_row_ && !resume) beams_.back().along = RowFile(beams_.back().along_path);
   }
-}
-
-BeamCsvRecorder::~BeamCsvRecorder() {
-  for (auto& b : beams_)
-    if (b.along) std::fclose(b.along);
 }
 
 void BeamCsvRecorder::begin(const std::vector<std::string>&) {
@@ -64,7 +38,7 @@ void BeamCsvRecorder::begin(const std::vector<std::string>&) {
   for (const auto& q : post::beam_quantities())
     fmt::format_to(std::back_inserter(line_), ",{}", q.name);
   line_ += '\n';
-  for (auto& b : beams_) put_or_throw(line_, b.along, b.along_path);
+  for (auto& b : beams_) b.along.append(line_);
 }
 
 void BeamCsvRecorder::record(const State& state, std::span<const double>) {
@@ -82,15 +56,16 @@ void BeamCsvRecorder::record(const State& state, std::span<const double>) {
         fmt::format_to(std::back_inserter(line_), ",{:.17g}", table_(i, j));
       line_ += '\n';
     }
-    put_or_throw(line_, b.along, b.along_path);
+    b.along.append(line_);  // one write: the file never ends in a partial row
   }
 }
 
 void BeamCsvRecorder::flush() {
   if (!envelope_) return;
+  // every envelope is attempted; the first failure is thrown after the others
+  std::exception_ptr failure;
   for (auto& b : beams_) {
     if (b.envelope.count() == 0) continue;
-    std::FILE* f = open_or_throw(b.envelope_path);
     line_ = "station,s";
     for (const auto& q : post::beam_quantities())
       fmt::format_to(std::back_inserter(line_), ",{0}.min,{0}.max,{0}.mean", q.name);
@@ -105,23 +80,20 @@ void BeamCsvRecorder::flush() {
                        b.envelope.min()(i, j), b.envelope.max()(i, j), mean(i, j));
       line_ += '\n';
     }
-    const bool ok = std::fputs(line_.c_str(), f) >= 0;
-    if (std::fclose(f) != 0 || !ok)
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", b.envelope_path.string(), std::strerror(errno)));
+    try {
+      write_file_atomically(b.envelope_path, line_);
+    } catch (const OutputError&) {
+      if (!failure) failure = std::current_exception();
+    }
   }
-  for (auto& b : beams_)
-    if (b.along) std::fflush(b.along);
+  if (failure) std::rethrow_exception(failure);
 }
 
 bool BeamCsvRecorder::save(CheckpointWriter& out, const std::string& prefix) const {
   for (std::size_t k = 0; k < beams_.size(); ++k) {
     const Beam& b = beams_[k];
     const std::string p = fmt::format("{}.beam{}", prefix, k);
-    if (b.along) {
-      std::fflush(b.along);
-      out.put(p + ".bytes", static_cast<long>(std::ftell(b.along)));
-    }
+    if (per_row_) out.put(p + ".bytes", static_cast<long>(b.along.size()));
     if (envelope_) {
       out.put(p + ".envelope.count", b.envelope.count());
       if (b.envelope.count() > 0) {
@@ -138,18 +110,26 @@ void BeamCsvRecorder::restore(const CheckpointReader& in, const std::string& pre
   for (std::size_t k = 0; k < beams_.size(); ++k) {
     Beam& b = beams_[k];
     const std::string p = fmt::format("{}.beam{}", prefix, k);
-    if (b.along) {
-      std::fclose(b.along);
-      b.along = nullptr;
-      std::filesystem::resize_file(b.along_path,
-                                   static_cast<std::uintmax_t>(in.integer(p + ".bytes")));
-      b.along = open_or_throw(b.along_path, "ab");
+    if (per_row_) {
+      const std::string key = p + ".bytes";
+      const long bytes = in.integer(key, 0);
+      in.require_file(key, b.along_path, static_cast<std::uintmax_t>(bytes));
+      try {
+        b.along = RowFile(b.along_path, static_cast<std::uintmax_t>(bytes));
+      } catch (const OutputError& e) {
+        in.fail(key, e.what());
+      }
     }
     if (envelope_) {
-      const long count = in.integer(p + ".envelope.count");
-      if (count > 0)
-        b.envelope.restore(count, in.matrix(p + ".envelope.min"), in.matrix(p + ".envelope.max"),
-                           in.matrix(p + ".envelope.sum"));
+      const long count = in.integer(p + ".envelope.count", 0);
+      if (count > 0) {
+        // the sizes of this model's table: stations x quantities
+        const Index rows = static_cast<Index>(b.results.stations().size());
+        const Index cols = post::kBeamQuantityCount;
+        b.envelope.restore(count, in.matrix(p + ".envelope.min", rows, cols),
+                           in.matrix(p + ".envelope.max", rows, cols),
+                           in.matrix(p + ".envelope.sum", rows, cols));
+      }
     }
   }
   resumed_ = true;

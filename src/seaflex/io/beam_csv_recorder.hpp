@@ -2,14 +2,17 @@
 // `<prefix><beam>.along.csv` with one line per station and output row, and
 // `<prefix><beam>.envelope.csv` with the minimum, maximum and mean of every quantity at
 // every station over the output rows, rewritten whenever the recorder is flushed (at the
-// end of a run and on a failure). Layout: docs/results-format.md.
+// end of a run and on a failure) through a temporary file renamed over it, so it is
+// complete or absent. Each along row block is one write; a failed write cuts the file back
+// to its last whole row and throws OutputError (core/output_file.hpp). Layout:
+// docs/results-format.md.
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <vector>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/post/beam_results.hpp"
 #include "seaflex/post/envelope.hpp"
 #include "seaflex/simulation/recorder.hpp"
@@ -18,14 +21,11 @@ namespace seaflex::io {
 
 class BeamCsvRecorder : public Recorder {
  public:
-  /// Opens (truncates) the along files when per_row; throws std::runtime_error when a
-  /// file cannot be written.
+  /// Creates (truncates) the along files when per_row (with resume: leaves them to
+  /// restore()); throws OutputError when a file cannot be written.
   BeamCsvRecorder(const std::filesystem::path& dir, const std::string& prefix,
                   std::vector<post::BeamResults> beams, bool per_row, bool envelope,
                   bool resume = false);
-  ~BeamCsvRecorder() override;
-  BeamCsvRecorder(const BeamCsvRecorder&) = delete;
-  BeamCsvRecorder& operator=(const BeamCsvRecorder&) = delete;
 
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
@@ -42,7 +42,7 @@ class BeamCsvRecorder : public Recorder {
   struct Beam {
     post::BeamResults results;
     post::Envelope envelope;
-    std::FILE* along = nullptr;
+    RowFile along;
     std::filesystem::path along_path, envelope_path;
   };
   std::vector<Beam> beams_;

@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <cstring>
+#include <exception>
 #include <stdexcept>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/post/code_check.hpp"
 
 namespace seaflex::io {
@@ -90,6 +90,7 @@ void CodeCheckRecorder::record(const State& state, std::span<const double>) {
 void CodeCheckRecorder::flush() {
   if (!any_) return;
   summary_ = {{"DNV-ST-F201", "", 0, -1, 0}, {"API RP 2RD", "", 0, -1, 0}};
+  std::exception_ptr failure;  // every file is attempted; the first failure is thrown after
   for (auto& b : beams_) {
     std::string text = "station,s,dnv_utilisation,dnv_time,api_utilisation,api_time\n";
     const auto& stations = b.results.stations();
@@ -102,12 +103,13 @@ void CodeCheckRecorder::flush() {
       if (b.api[i] > summary_[1].utilisation)
         summary_[1] = {"API RP 2RD", name, stations[i].s, b.api[i], b.api_t[i]};
     }
-    std::FILE* f = std::fopen(b.path.c_str(), "w");
-    const bool ok = f && std::fputs(text.c_str(), f) >= 0;
-    if (!f || std::fclose(f) != 0 || !ok)
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", b.path.string(), std::strerror(errno)));
+    try {
+      write_file_atomically(b.path, text);  // complete or absent
+    } catch (const OutputError&) {
+      if (!failure) failure = std::current_exception();
+    }
   }
+  if (failure) std::rethrow_exception(failure);
 }
 
 namespace {
@@ -141,20 +143,22 @@ bool CodeCheckRecorder::save(CheckpointWriter& out, const std::string& prefix) c
 }
 
 void CodeCheckRecorder::restore(const CheckpointReader& in, const std::string& prefix) {
-  any_ = in.integer(prefix + ".any") != 0;
+  any_ = in.integer(prefix + ".any", 0, 1) != 0;
   for (std::size_t k = 0; k < beams_.size(); ++k) {
     Beam& b = beams_[k];
     const std::string p = fmt::format("{}.beam{}", prefix, k);
+    // every table has one entry per result station of this model's beam
+    const auto n = static_cast<Index>(b.results.stations().size());
     b.moment_f.clear();
-    if (in.integer(p + ".functional") != 0) {
-      const MatX m = in.matrix(p + ".moment_f");
+    if (in.integer(p + ".functional", 0, 1) != 0) {
+      const MatX m = in.matrix(p + ".moment_f", n, 3);
       for (Index i = 0; i < m.rows(); ++i) b.moment_f.emplace_back(m.row(i).transpose());
-      b.tension_f = from_vec(in.vector(p + ".tension_f"));
+      b.tension_f = from_vec(in.vector(p + ".tension_f", n));
     }
-    b.dnv = from_vec(in.vector(p + ".dnv"));
-    b.dnv_t = from_vec(in.vector(p + ".dnv_t"));
-    b.api = from_vec(in.vector(p + ".api"));
-    b.api_t = from_vec(in.vector(p + ".api_t"));
+    b.dnv = from_vec(in.vector(p + ".dnv", n));
+    b.dnv_t = from_vec(in.vector(p + ".dnv_t", n));
+    b.api = from_vec(in.vector(p + ".api", n));
+    b.api_t = from_vec(in.vector(p + ".api_t", n));
   }
 }
 

@@ -1,23 +1,22 @@
 // Writes output rows to a CSV file: a header row "time,<channel>,...", then one row per
-// output time. Every row is flushed to the operating system as it is written, so a run
-// that stops early leaves every computed row on disk.
+// output time. Every row reaches the operating system in one write as it is computed, so
+// a run that stops early leaves every computed row on disk; a write that fails (disk
+// full) cuts the file back to its last whole row and throws OutputError naming it
+// (core/output_file.hpp).
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/simulation/recorder.hpp"
 
 namespace seaflex::io {
 
 class CsvRecorder : public Recorder {
  public:
-  /// Opens (truncates) path, or with resume opens it to append after restore();
-  /// throws std::runtime_error when it cannot.
+  /// Creates (truncates) path, or with resume leaves it to restore(); throws OutputError
+  /// when it cannot.
   explicit CsvRecorder(const std::filesystem::path& path, bool resume = false);
-  ~CsvRecorder() override;
-  CsvRecorder(const CsvRecorder&) = delete;
-  CsvRecorder& operator=(const CsvRecorder&) = delete;
 
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
@@ -26,7 +25,7 @@ class CsvRecorder : public Recorder {
   void restore(const CheckpointReader& in, const std::string& prefix) override;
 
  private:
-  std::FILE* file_ = nullptr;
+  RowFile file_;
   std::string line_;
   std::filesystem::path path_;
   bool resumed_ = false;  // the header is already in the file

@@ -2,9 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
+#include <exception>
 
 #include "seaflex/elements/ancf_cable.hpp"
 
@@ -13,14 +11,6 @@ namespace seaflex::io {
 namespace {
 
 constexpr double kYear = 365.25 * 86400.0;  // s
-
-std::FILE* open_or_throw(const std::filesystem::path& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f)
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-  return f;
-}
 
 // the unit tangent r'/|r'| of the beam at a station
 Vec3 tangent(const AncfBeam& beam, const State& state, const post::BeamStation& st) {
@@ -56,23 +46,18 @@ FatigueRecorder::FatigueRecorder(const std::filesystem::path& dir, const std::st
                       {},
                       paths[0],
                       paths[1],
-                      nullptr});
-    if (settings_.write_stresses) beams_.back().stresses = open_or_throw(paths[1]);
+                      {}});
+    if (settings_.write_stresses) beams_.back().stresses = RowFile(paths[1]);
   }
-}
-
-FatigueRecorder::~FatigueRecorder() {
-  for (auto& b : beams_)
-    if (b.stresses) std::fclose(b.stresses);
 }
 
 void FatigueRecorder::begin(const std::vector<std::string>&) {
   for (auto& b : beams_) {
-    if (!b.stresses) continue;
+    if (!b.stresses.is_open()) continue;
     line_ = "time,station,s";
     for (int j = 0; j < settings_.points; ++j) fmt::format_to(std::back_inserter(line_), ",p{}", j);
     line_ += '\n';
-    std::fputs(line_.c_str(), b.stresses);
+    b.stresses.append(line_);
   }
 }
 
@@ -103,15 +88,13 @@ void FatigueRecorder::record(const State& state, std::span<const double>) {
       post::pipe_fibre_stresses(T_wall, M, tangent(beam, state, stations[i]), b.reference[i],
                                 sec.area, sec.second_moment, 0.5 * sec.outer_diameter, out);
       for (double& s : out) s *= settings_.scf;  // hot-spot stress
-      if (b.stresses) {
+      if (b.stresses.is_open()) {
         fmt::format_to(std::back_inserter(line_), "{:.17g},{},{:.17g}", state.t, i, stations[i].s);
         for (double s : out) fmt::format_to(std::back_inserter(line_), ",{:.17g}", s);
         line_ += '\n';
       }
     }
-    if (b.stresses && std::fputs(line_.c_str(), b.stresses) < 0)
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", b.stress_path.string(), std::strerror(errno)));
+    if (b.stresses.is_open()) b.stresses.append(line_);  // one write: whole rows only
     b.damage.add(buffer_);
   }
 }
@@ -121,11 +104,10 @@ void FatigueRecorder::flush() {
   const double exposure = settings_.exposure > 0.0 ? settings_.exposure : t_last_ - t_first_;
   const int points = settings_.points;
   summary_.reset();
+  std::exception_ptr failure;  // every file is attempted; the first failure is thrown after
   for (auto& b : beams_) {
-    if (b.stresses) std::fflush(b.stresses);
     post::FatigueDamage done = b.damage;  // the residue counted on a copy: the run goes on
     done.finish();
-    std::FILE* f = open_or_throw(b.path);
     line_ = "station,s,worst_point,worst_angle_deg,damage,damage_per_year,life_years,exposure_s";
     for (int j = 0; j < points; ++j) fmt::format_to(std::back_inserter(line_), ",damage_p{}", j);
     line_ += '\n';
@@ -149,11 +131,13 @@ void FatigueRecorder::flush() {
       if (!summary_ || d > summary_->damage)
         summary_ = FatigueSummary{b.results.beam().name(), stations[i].s, worst, d, life, exposure};
     }
-    const bool ok = std::fputs(line_.c_str(), f) >= 0;
-    if (std::fclose(f) != 0 || !ok)
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", b.path.string(), std::strerror(errno)));
+    try {
+      write_file_atomically(b.path, line_);  // complete or absent
+    } catch (const OutputError&) {
+      if (!failure) failure = std::current_exception();
+    }
   }
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace seaflex::io

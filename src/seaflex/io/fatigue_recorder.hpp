@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/io/design_settings.hpp"
 #include "seaflex/post/beam_results.hpp"
 #include "seaflex/post/fatigue_damage.hpp"
@@ -37,9 +38,6 @@ class FatigueRecorder : public Recorder {
  public:
   FatigueRecorder(const std::filesystem::path& dir, const std::string& prefix,
                   std::vector<post::BeamResults> beams, const FatigueSettings& settings);
-  ~FatigueRecorder() override;
-  FatigueRecorder(const FatigueRecorder&) = delete;
-  FatigueRecorder& operator=(const FatigueRecorder&) = delete;
 
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
@@ -56,7 +54,7 @@ class FatigueRecorder : public Recorder {
     post::FatigueDamage damage;
     std::vector<Vec3> reference;  // per station, chosen at the first row
     std::filesystem::path path, stress_path;
-    std::FILE* stresses = nullptr;
+    RowFile stresses;  // open when settings.write_stresses
   };
   std::vector<Beam> beams_;
   FatigueSettings settings_;

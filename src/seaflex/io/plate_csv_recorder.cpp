@@ -2,25 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
-
 #include "seaflex/post/plate_results.hpp"
 
 namespace seaflex::io {
-
-namespace {
-
-std::FILE* open_or_throw(const std::filesystem::path& path, const char* mode) {
-  std::FILE* f = std::fopen(path.c_str(), mode);
-  if (!f)
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-  return f;
-}
-
-}  // namespace
 
 std::vector<std::filesystem::path> PlateCsvRecorder::files(
     const std::filesystem::path& dir, const std::string& prefix,
@@ -36,13 +20,8 @@ PlateCsvRecorder::PlateCsvRecorder(const std::filesystem::path& dir, const std::
     : resumed_(resume) {
   for (const AncfPlate* p : plates) {
     const auto path = dir / fmt::format("{}{}.nodes.csv", prefix, p->name());
-    plates_.push_back({p, open_or_throw(path, resume ? "ab" : "w"), path});
+    plates_.push_back({p, resume ? RowFile() : RowFile(path), path});
   }
-}
-
-PlateCsvRecorder::~PlateCsvRecorder() {
-  for (auto& p : plates_)
-    if (p.file) std::fclose(p.file);
 }
 
 void PlateCsvRecorder::begin(const std::vector<std::string>&) {
@@ -51,9 +30,7 @@ void PlateCsvRecorder::begin(const std::vector<std::string>&) {
   for (const auto& q : post::plate_quantities())
     fmt::format_to(std::back_inserter(line_), ",{}", q.name);
   line_ += '\n';
-  for (auto& p : plates_)
-    if (std::fputs(line_.c_str(), p.file) < 0)
-      throw std::runtime_error(fmt::format("cannot write {}", p.path.string()));
+  for (auto& p : plates_) p.file.append(line_);
 }
 
 void PlateCsvRecorder::record(const State& state, std::span<const double>) {
@@ -71,34 +48,29 @@ void PlateCsvRecorder::record(const State& state, std::span<const double>) {
           fmt::format_to(std::back_inserter(line_), ",{:.17g}", table_(node, q));
         line_ += '\n';
       }
-    if (std::fputs(line_.c_str(), p.file) < 0 || std::fflush(p.file) != 0)
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", p.path.string(), std::strerror(errno)));
+    p.file.append(line_);  // one write: the file never ends in a partial row
   }
 }
 
-void PlateCsvRecorder::flush() {
-  for (auto& p : plates_) std::fflush(p.file);
-}
+void PlateCsvRecorder::flush() {}  // every row is written as it comes
 
 bool PlateCsvRecorder::save(CheckpointWriter& out, const std::string& prefix) const {
-  for (std::size_t k = 0; k < plates_.size(); ++k) {
-    std::fflush(plates_[k].file);
-    out.put(fmt::format("{}.plate{}.bytes", prefix, k),
-            static_cast<long>(std::ftell(plates_[k].file)));
-  }
+  for (std::size_t k = 0; k < plates_.size(); ++k)
+    out.put(fmt::format("{}.plate{}.bytes", prefix, k), static_cast<long>(plates_[k].file.size()));
   return true;
 }
 
 void PlateCsvRecorder::restore(const CheckpointReader& in, const std::string& prefix) {
   for (std::size_t k = 0; k < plates_.size(); ++k) {
     Plate& p = plates_[k];
-    std::fclose(p.file);
-    p.file = nullptr;
-    std::filesystem::resize_file(
-        p.path,
-        static_cast<std::uintmax_t>(in.integer(fmt::format("{}.plate{}.bytes", prefix, k))));
-    p.file = open_or_throw(p.path, "ab");
+    const std::string key = fmt::format("{}.plate{}.bytes", prefix, k);
+    const long bytes = in.integer(key, 0);
+    in.require_file(key, p.path, static_cast<std::uintmax_t>(bytes));
+    try {
+      p.file = RowFile(p.path, static_cast<std::uintmax_t>(bytes));
+    } catch (const OutputError& e) {
+      in.fail(key, e.what());
+    }
   }
   resumed_ = true;
 }

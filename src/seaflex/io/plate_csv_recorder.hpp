@@ -4,10 +4,10 @@
 // docs/results-format.md.
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
 #include <vector>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/elements/ancf_plate.hpp"
 #include "seaflex/simulation/recorder.hpp"
 
@@ -18,9 +18,6 @@ class PlateCsvRecorder : public Recorder {
   /// Opens (truncates, or with resume appends to) the files; throws std::runtime_error.
   PlateCsvRecorder(const std::filesystem::path& dir, const std::string& prefix,
                    std::vector<const AncfPlate*> plates, bool resume = false);
-  ~PlateCsvRecorder() override;
-  PlateCsvRecorder(const PlateCsvRecorder&) = delete;
-  PlateCsvRecorder& operator=(const PlateCsvRecorder&) = delete;
 
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
@@ -36,7 +33,7 @@ class PlateCsvRecorder : public Recorder {
  private:
   struct Plate {
     const AncfPlate* plate;
-    std::FILE* file = nullptr;
+    RowFile file;
     std::filesystem::path path;
   };
   std::vector<Plate> plates_;

@@ -6,25 +6,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <stdexcept>
 
+#include "seaflex/core/errors.hpp"
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/post/extremes.hpp"
 
 namespace seaflex::io {
 
 namespace {
-
-// writes text to path in one go; throws std::runtime_error naming the file
-void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f)
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-  const bool ok = std::fputs(text.c_str(), f) >= 0;
-  if (std::fclose(f) != 0 || !ok)
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-}
 
 std::string station_name(const std::string& beam, Index station, int quantity) {
   return fmt::format("{}.station{}.{}", beam, station,
@@ -61,6 +52,11 @@ post::StatisticsAccumulator StatisticsRecorder::make() const {
 
 void StatisticsRecorder::begin(const std::vector<std::string>& channels) {
   names_ = channels;
+  if (restored_ && channels_.size() != channels.size())
+    throw InputError({Diagnostic{"", 0, 0, "statistics",
+                                 fmt::format("the checkpoint holds the statistics of {} channels, "
+                                             "the model has {}",
+                                             channels_.size(), channels.size())}});
   if (channels_.size() != channels.size()) channels_.assign(channels.size(), make());
 }
 
@@ -77,9 +73,18 @@ void StatisticsRecorder::record(const State& state, std::span<const double> valu
 }
 
 void StatisticsRecorder::flush() {
-  write_statistics();
-  write_extremes();
-  write_ranges();
+  // each file is attempted (complete or absent); the first failure is thrown after
+  std::exception_ptr failure;
+  for (void (StatisticsRecorder::*write)() const :
+       {&StatisticsRecorder::write_statistics, &StatisticsRecorder::write_extremes,
+        &StatisticsRecorder::write_ranges}) {
+    try {
+      (this->*write)();
+    } catch (const OutputError&) {
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
 }
 
 void StatisticsRecorder::write_statistics() const {
@@ -99,7 +104,7 @@ void StatisticsRecorder::write_statistics() const {
       line(station_name(b.results.beam().name(), static_cast<Index>(k) / post::kBeamQuantityCount,
                         static_cast<int>(k % post::kBeamQuantityCount)),
            b.stats[k]);
-  write_file(dir_ / "statistics.csv", text);
+  write_file_atomically(dir_ / "statistics.csv", text);
 }
 
 Hdf5Recorder::Table StatisticsRecorder::table() const {
@@ -166,7 +171,7 @@ void StatisticsRecorder::write_extremes() const {
       lines(station_name(b.results.beam().name(), static_cast<Index>(k) / post::kBeamQuantityCount,
                          static_cast<int>(k % post::kBeamQuantityCount)),
             b.stats[k]);
-  write_file(dir_ / "extremes.csv", text);
+  write_file_atomically(dir_ / "extremes.csv", text);
 }
 
 void StatisticsRecorder::write_ranges() const {
@@ -188,7 +193,7 @@ void StatisticsRecorder::write_ranges() const {
       }
       text += '\n';
     }
-    write_file(dir_ / fmt::format("{}.range.csv", b.results.beam().name()), text);
+    write_file_atomically(dir_ / fmt::format("{}.range.csv", b.results.beam().name()), text);
   }
 }
 
@@ -209,9 +214,20 @@ bool StatisticsRecorder::save(CheckpointWriter& out, const std::string& prefix) 
 void StatisticsRecorder::restore(const CheckpointReader& in, const std::string& prefix) {
   const auto get = [&](const std::string& key, post::StatisticsAccumulator& a) {
     const VecX v = in.vector(key);
-    a.restore(std::vector<double>(v.data(), v.data() + v.size()));
+    try {
+      a.restore(std::vector<double>(v.data(), v.data() + v.size()));
+    } catch (const std::invalid_argument& e) {
+      in.fail(key, e.what());
+    }
   };
-  channels_.assign(static_cast<std::size_t>(in.integer(prefix + ".channels")), make());
+  // every channel has its line: a damaged count allocates nothing
+  const long channels = in.integer(prefix + ".channels", 0);
+  for (long i = 0; i < channels; ++i)
+    if (!in.has(fmt::format("{}.channel{}", prefix, i)))
+      in.fail(prefix + ".channels",
+              fmt::format("{} channels, but {}.channel{} is missing", channels, prefix, i));
+  channels_.assign(static_cast<std::size_t>(channels), make());
+  restored_ = true;
   for (std::size_t i = 0; i < channels_.size(); ++i)
     get(fmt::format("{}.channel{}", prefix, i), channels_[i]);
   for (std::size_t b = 0; b < beams_.size(); ++b)

@@ -58,6 +58,7 @@ class StatisticsRecorder : public Recorder {
   std::vector<post::StatisticsAccumulator> channels_;
   std::vector<Beam> beams_;
   MatX table_;
+  bool restored_ = false;  // from a checkpoint: begin() checks the channel count
 };
 
 }  // namespace seaflex::io

@@ -1,4 +1,5 @@
 #include "seaflex/io/vtk_recorder.hpp"
+#include "seaflex/core/output_file.hpp"
 
 #include <fmt/format.h>
 
@@ -73,7 +74,7 @@ void render(const Piece& p, std::string& out) {
 }
 
 [[noreturn]] void fail(const std::filesystem::path& path) {
-  throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+  throw OutputError(path, std::strerror(errno));
 }
 
 }  // namespace
@@ -134,10 +135,7 @@ void VtkRecorder::begin(const std::vector<std::string>&) {
 void VtkRecorder::write_piece(const std::string& name, const std::string& text) {
   const std::string file = fmt::format("{}_{:06d}.vtp", name, rows_);
   const auto path = vtk_dir_ / file;
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) fail(path);
-  const bool ok = std::fputs(text.c_str(), f) >= 0;
-  if (std::fclose(f) != 0 || !ok) fail(path);
+  write_file_atomically(path, text);  // complete or absent
   const int part = static_cast<int>(std::count(entries_.begin(), entries_.end(), '\n'));
   fmt::format_to(std::back_inserter(entries_),
                  "    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"{}\" name=\"{}\" "

@@ -132,9 +132,15 @@ std::vector<double> StatisticsAccumulator::save() const {
 void StatisticsAccumulator::restore(const std::vector<double>& saved) {
   constexpr std::size_t kHeader = 13;
   if (saved.size() < kHeader) throw std::invalid_argument("statistics: a short saved state");
-  const auto blocks = static_cast<std::size_t>(saved[11]);
-  if (blocks != blocks_.size() || saved.size() < kHeader + blocks)
+  // a damaged state must not become a huge or negative count (a cast of NaN or 1e300 to an
+  // integer is undefined)
+  if (saved[11] != static_cast<double>(blocks_.size()) || saved.size() < kHeader + blocks_.size())
     throw std::invalid_argument("statistics: the saved state has another number of blocks");
+  const auto blocks = blocks_.size();
+  if (!(saved[0] >= 0.0 && saved[0] <= 9e15 && saved[0] == std::floor(saved[0])))
+    throw std::invalid_argument("statistics: the saved count is not a whole number");
+  if (saved[9] != -1.0 && saved[9] != 0.0 && saved[9] != 1.0)
+    throw std::invalid_argument("statistics: the saved direction is not -1, 0 or 1");
   n_ = static_cast<long>(saved[0]);
   mean_ = saved[1];
   M2_ = saved[2];
