@@ -7,12 +7,13 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
 
+#include "seaflex/core/errors.hpp"
+#include "seaflex/core/input_file.hpp"
 #include "seaflex/forces/morison_beam.hpp"
 #include "seaflex/forces/seabed_contact.hpp"
 #include "seaflex/io/load_context.hpp"
@@ -30,15 +31,11 @@ std::shared_ptr<const hydro::Seabed> read_grid(MapReader& r, const LoadContext& 
   if (!file) return nullptr;
   std::filesystem::path path(*file);
   if (path.is_relative()) path = std::filesystem::path(ctx.diag.file()).parent_path() / path;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    r.error("file",
-            fmt::format("cannot open the bathymetry file '{}': not a regular file", path.string()));
-    return nullptr;
-  }
-  std::ifstream in(path);
-  if (!in) {
-    r.error("file", fmt::format("cannot open the bathymetry file '{}'", path.string()));
+  std::istringstream in;
+  try {
+    in.str(read_input_file(path.string(), "bathymetry file", kMaxDataFileBytes));
+  } catch (const InputError& e) {
+    for (const auto& d : e.diagnostics()) r.error("file", d.format());
     return nullptr;
   }
   auto problem = [&](int line, const std::string& m) {
@@ -50,10 +47,6 @@ std::shared_ptr<const hydro::Seabed> read_grid(MapReader& r, const LoadContext& 
   bool first = true;
   while (std::getline(in, line)) {
     ++n;
-    if (n > 10'000'000) {
-      problem(n, "more than 10^7 lines: not a bathymetry table");
-      return nullptr;
-    }
     const auto s = line.find_first_not_of(" \t\r");
     if (s == std::string::npos || line[s] == '#') continue;
     for (char& c : line)
