@@ -171,8 +171,9 @@ class RadiationFitAtScale(TempDirCase):
 
 class DidYouMeanAtScale(TempDirCase):
     def test_long_misspelt_body_name(self):
-        # before: 53 s for the edit distance of the two 100,000-letter names; names over
-        # 256 letters are not searched for a suggestion
+        # the reproducer: two 100,000-letter names took 53 s in the edit distance.
+        # A body name is now at most 64 letters, and a reference over 256 letters is not
+        # searched for a suggestion
         name = "r" * 100000
         bad = "r" * 99999 + "s"
         path = self.model(
@@ -185,7 +186,23 @@ class DidYouMeanAtScale(TempDirCase):
         r = run_limited(["check", path], GIB, timeout=5)
         self.assertEqual(r.returncode, 2)
         self.assertEqual(r.stderr.strip().splitlines(),
-                         [f"{path}:5:12: supports[0].body: no body named '{bad}'; "
+                         [f"{path}:2:5: bodies: body names may have at most 64 characters (they "
+                          "become output channel and file names, such as <body>.n0.x), got "
+                          "100000 characters",
+                          f"{path}:5:12: supports[0].body: no body named '{bad}': the model "
+                          "has no valid bodies"])
+        # a valid 64-letter name and a 100,000-letter reference to it
+        name = "r" * 64
+        path = self.model(
+            "bodies:\n"
+            f"  {name}: {{type: rigid_body, mass: 10, inertia: [1, 1, 1], position: [0, 0, 0]}}\n"
+            "supports:\n"
+            f"  - {{body: {bad}, type: fixed, fix: [x]}}\n"
+            "dynamics: {integrator: rk4, time_step: 1e-3, duration: 0.01}\n")
+        r = run_limited(["check", path], GIB, timeout=5)
+        self.assertEqual(r.returncode, 2)
+        self.assertEqual(r.stderr.strip().splitlines(),
+                         [f"{path}:4:12: supports[0].body: no body named '{bad}'; "
                           f"expected one of: {name}"])
 
     def test_normal_misspelt_name_keeps_its_suggestion(self):
