@@ -16,6 +16,11 @@ Vec4 shape_dx(double xi, double l) {
               3.0 * x2 - 2.0 * xi);
 }
 
+void add_shape_product(Mat12& K, const Vec4& a, const Vec4& b, const Mat3& B, double scale) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) K.block<3, 3>(3 * i, 3 * j) += (scale * a[i] * b[j]) * B;
+}
+
 Vec4 shape_dxx(double xi, double l) {
   return Vec4((-6.0 + 12.0 * xi) / (l * l), (-4.0 + 6.0 * xi) / l, (6.0 - 12.0 * xi) / (l * l),
               (6.0 * xi - 2.0) / l);

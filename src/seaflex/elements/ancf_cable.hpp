@@ -45,6 +45,11 @@ Mat34 relative_nodes(const Vec12& e);
 /// kron(B, I3): the 12x12 matrix whose (i, j) 3x3 block is B(i, j) I.
 Mat12 expand(const Mat4& B);
 
+/// K += scale kron(a b^T, B): block (i, j) += scale a_i b_j B. The tangent of a load per
+/// length f(r, r', r_dot) spread with the shape functions, Q = int S^T f dx: a = S and
+/// b = S (for df/dr, df/dr_dot) or b = S_x (for df/dr').
+void add_shape_product(Mat12& K, const Vec4& a, const Vec4& b, const Mat3& B, double scale);
+
 /// Consistent mass matrix, rho_A = mass per unit length (kg/m): thesis eq. (10).
 Mat12 mass_matrix(double rho_A, double l);
 

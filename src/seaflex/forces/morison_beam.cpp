@@ -8,15 +8,10 @@
 namespace seaflex {
 
 namespace {
+using ancf_cable::add_shape_product;
 using ancf_cable::Mat12;
 using ancf_cable::Vec12;
 using ancf_cable::Vec4;
-
-// 12x12 kron(s s^T, B): block (i, j) = s_i s_j B
-void add_kron(Mat12& K, const Vec4& a, const Vec4& b, const Mat3& B, double scale) {
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) K.block<3, 3>(3 * i, 3 * j) += (scale * a[i] * b[j]) * B;
-}
 }  // namespace
 
 MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
@@ -126,7 +121,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       if (!want_matrix) continue;
       if (s.km != 0.0 && ca_mass != 0.0) {
         const Vec3 tt = rp.normalized();
-        add_kron(K, sh, sh, ca_mass * (Mat3::Identity() - tt * tt.transpose()), s.km * dx);
+        add_shape_product(K, sh, sh, ca_mass * (Mat3::Identity() - tt * tt.transpose()), s.km * dx);
       }
       if (s.kq != 0.0 && ca_mass != 0.0 && target.acceleration) {
         // the added mass turns with the axis: d/dr' [ca (I - t t^T) a] with t = r'/|r'|,
@@ -138,11 +133,11 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         const Mat3 P = Mat3::Identity() - tt * tt.transpose();
         const Mat3 D =
             -ca_mass * (tt * ax.transpose() + tt.dot(ax) * Mat3::Identity()) * P / stretch;
-        add_kron(K, sh, shx, D, s.kq * dx);
+        add_shape_product(K, sh, shx, D, s.kq * dx);
       }
-      if (s.kv != 0.0) add_kron(K, sh, sh, pl.df_dv, -s.kv * dx);
+      if (s.kv != 0.0) add_shape_product(K, sh, sh, pl.df_dv, -s.kv * dx);
       if (s.kq != 0.0) {
-        add_kron(K, sh, shx, pl.df_drp, -s.kq * dx);
+        add_shape_product(K, sh, shx, pl.df_drp, -s.kq * dx);
         // position: central differences of the fluid field (current profile, waves)
         Mat3 df_dr;
         const double h = 1e-4;
@@ -155,7 +150,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
                           point_load(rm_, rp, rdot, state.t, load_factor, false, false).f) /
                          (2.0 * h);
         }
-        add_kron(K, sh, sh, df_dr, -s.kq * dx);
+        add_shape_product(K, sh, sh, df_dr, -s.kq * dx);
       }
     }
     if (want_matrix) target.matrix->add(blocks_[k], K);

@@ -8,15 +8,10 @@
 namespace seaflex {
 
 namespace {
+using ancf_cable::add_shape_product;
 using ancf_cable::Mat12;
 using ancf_cable::Vec12;
 using ancf_cable::Vec4;
-
-// 12x12 kron(a b^T, B): block (i, j) = a_i b_j B
-void add_kron(Mat12& K, const Vec4& a, const Vec4& b, const Mat3& B, double scale) {
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) K.block<3, 3>(3 * i, 3 * j) += (scale * a[i] * b[j]) * B;
-}
 }  // namespace
 
 SeabedContact::SeabedContact(std::string name, const AncfBeam& beam,
@@ -142,10 +137,10 @@ void SeabedContact::assemble(const State& state, double, AssemblyTarget& target)
               (dlen * sh[i] * f + (xi1 - xi0) * dxg * (l * shx[i] * f + sh[i] * df_dxi));
       }
       if (s.kq != 0.0) {
-        add_kron(K, sh, sh, pf.df_dr, -s.kq * dx);
-        add_kron(K, sh, shx, pf.df_drp, -s.kq * dx);
+        add_shape_product(K, sh, sh, pf.df_dr, -s.kq * dx);
+        add_shape_product(K, sh, shx, pf.df_drp, -s.kq * dx);
       }
-      if (s.kv != 0.0) add_kron(K, sh, sh, pf.df_dv, -s.kv * dx);
+      if (s.kv != 0.0) add_shape_product(K, sh, sh, pf.df_dv, -s.kv * dx);
     }
     // a touchdown point x_c inside the element moves with e, and the Gauss points with it:
     // dQ/de += dQ/dx_c dx_c/de, with dx_c/de_j = -S_j(x_c) n^T / (l n . r'(x_c)) from
