@@ -16,7 +16,7 @@ import sys
 import time
 import unittest
 
-from cli_support import SEAFLEX, SRC, TempDirCase, run
+from cli_support import SEAFLEX, SRC, TempDirCase, release_only, run
 
 EXAMPLES = os.path.join(SRC, "examples")
 
@@ -114,6 +114,7 @@ class Cli(TempDirCase):
         for row in rows:
             self.assertAlmostEqual(row[tip], rows[0][tip], delta=1e-7)
 
+    @release_only
     def test_progress_line_and_quiet(self):
         # a run of more than two seconds shows a progress line, unless --quiet: the main
         # example, simulated three times as long (alone it takes about 2 s on a fast machine,
@@ -419,6 +420,7 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         self.assertLessEqual(max(abs(e) for e in eta), 0.1 + 1e-12)
         self.assertGreater(max(abs(e) for e in eta), 0.099)
 
+    @release_only
     def test_drilling_rig_runs_and_plots(self):
         # the flagship example in one command, then its report: PNG files with the motion of
         # the platform, the riser's deflection, the tensioner and the joint forces
