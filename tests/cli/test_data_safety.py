@@ -17,22 +17,8 @@ import subprocess
 import sys
 import unittest
 
-from cli_support import SEAFLEX, SRC, TempDirCase, run
+from cli_support import SANITIZER_BUILD, SEAFLEX, SRC, TempDirCase, run
 
-
-def _address_space_limit_usable():
-    """False for a sanitizer build: AddressSanitizer reserves terabytes of address space for
-    its shadow memory and cannot start under RLIMIT_AS (the release build asserts the bound)."""
-    def limit():
-        resource.setrlimit(resource.RLIMIT_AS, (1 << 30, 1 << 30))
-    try:
-        return subprocess.run([SEAFLEX, "--version"], capture_output=True, timeout=30,
-                              preexec_fn=limit).returncode == 0
-    except (OSError, subprocess.SubprocessError):
-        return False
-
-
-ADDRESS_SPACE_LIMIT_USABLE = _address_space_limit_usable()
 
 EXAMPLES = os.path.join(SRC, "examples")
 
@@ -120,7 +106,7 @@ class DataSafety(TempDirCase):
         before = snapshot(self.dir, os.path.join(self.dir, "none"))
 
         def limits():
-            if memory and ADDRESS_SPACE_LIMIT_USABLE:
+            if memory and not SANITIZER_BUILD:
                 resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
         r = subprocess.run([SEAFLEX, "resume", self.out, "-q"], capture_output=True, text=True,
                            timeout=60, preexec_fn=limits)

@@ -12,27 +12,15 @@ import subprocess
 import sys
 import unittest
 
-from cli_support import SEAFLEX, SRC, TempDirCase
+from cli_support import SANITIZER_BUILD, SEAFLEX, SRC, TempDirCase
 
 GIB = 1 << 30
-
-
-def address_space_limit_usable():
-    """False for a sanitizer build: AddressSanitizer reserves terabytes of address space for
-    its shadow memory and cannot start under RLIMIT_AS."""
-    def limit():
-        resource.setrlimit(resource.RLIMIT_AS, (GIB, GIB))
-    try:
-        return subprocess.run([SEAFLEX, "--version"], capture_output=True, timeout=30,
-                              preexec_fn=limit).returncode == 0
-    except (OSError, subprocess.SubprocessError):
-        return False
 
 
 # The time and memory bounds are properties of the release build (the one users run); a
 # sanitizer build (.ci/run's second stage) checks the messages without them and skips the
 # largest models, which it would run tens of times slower.
-RELEASE = address_space_limit_usable()
+RELEASE = not SANITIZER_BUILD
 release_only = unittest.skipUnless(RELEASE, "time and memory bounds: release build only")
 
 

@@ -96,13 +96,19 @@ void AncfBeam::write_initial_state(VecX& q, VecX& v) const {
   }
 }
 
-void AncfBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
-  blocks_.clear();
+std::vector<math::BlockId> AncfBeam::declare_element_blocks(
+    math::SparseBlockAssembler& matrix) const {
+  std::vector<math::BlockId> blocks;
   std::vector<Index> dofs(12);
   for (int k = 0; k < num_elements(); ++k) {
     for (int i = 0; i < 12; ++i) dofs[i] = node_index(k) + i;
-    blocks_.push_back(matrix.declare_block(dofs, dofs));
+    blocks.push_back(matrix.declare_block(dofs, dofs));
   }
+  return blocks;
+}
+
+void AncfBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
+  blocks_ = declare_element_blocks(matrix);
 }
 
 void AncfBeam::assemble(const State& state, AssemblyTarget& target) const {

@@ -84,6 +84,9 @@ class AncfBeam : public Body {
 
   /// Global index of the first coordinate of node k (r), r' follows at +3.
   Index node_index(int k) const { return offset() + 6 * k; }
+  /// One 12 x 12 block per element (its coordinates, contiguous): for the beam itself and
+  /// for forces along it (Morison, seabed contact). Call after numbering.
+  std::vector<math::BlockId> declare_element_blocks(math::SparseBlockAssembler& matrix) const;
   /// Element k's 12 coordinates from q.
   ancf_cable::Vec12 element_coordinates(const VecX& q, int k) const {
     return q.segment<12>(node_index(k));

@@ -28,12 +28,7 @@ SeabedContact::SeabedContact(std::string name, const AncfBeam& beam,
 }
 
 void SeabedContact::declare_blocks(math::SparseBlockAssembler& matrix) {
-  blocks_.clear();
-  for (int k = 0; k < beam_.num_elements(); ++k) {
-    std::vector<Index> dofs(12);
-    for (int i = 0; i < 12; ++i) dofs[i] = beam_.node_index(k) + i;
-    blocks_.push_back(matrix.declare_block(dofs, dofs));
-  }
+  blocks_ = beam_.declare_element_blocks(matrix);
 }
 
 std::pair<double, double> SeabedContact::contact_interval(const State& state, int k) const {
