@@ -1,10 +1,12 @@
 #include "seaflex/io/yaml_reader.hpp"
 
 #include <fmt/format.h>
+#include <yaml-cpp/eventhandler.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <sstream>
 
 namespace seaflex::io {
 
@@ -359,17 +361,91 @@ void MapReader::finish() {
   }
 }
 
+namespace {
+
+// Watches the parser's events for the document after the first: where its first node is,
+// and whether it has one. Only the start of that document is needed.
+class SecondDocumentProbe final : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override { start = mark; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { node(mark, false); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { node(mark, true); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    node(mark, true);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    node(mark, true);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    node(mark, true);
+  }
+  void OnMapEnd() override {}
+
+  YAML::Mark start = YAML::Mark::null_mark();
+  YAML::Mark first_node = YAML::Mark::null_mark();
+  bool any_node = false;  // an event of any node, null included
+  bool content = false;   // a node that is not null
+
+ private:
+  void node(const YAML::Mark& mark, bool not_null) {
+    if (!any_node) first_node = mark;
+    any_node = true;
+    content = content || not_null;
+  }
+};
+
+class NullHandler final : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+}  // namespace
+
+// One document per file. YAML::LoadAll is not used: on some malformed text (a line that
+// starts with ',' after a multi-line plain scalar, found by fuzz_input_files) yaml-cpp 0.7's
+// parser reports an empty document at the same place forever and LoadAll never returns.
+// The first document is loaded with YAML::Load; a second pass over the events asks for at
+// most two more documents: a third that starts where the second did means the parser is
+// stuck, and that text is reported as a syntax error.
 YAML::Node parse_document(const std::string& text, const std::string& name) {
   Diagnostics diag(name);
   try {
-    std::vector<YAML::Node> documents = YAML::LoadAll(text);
-    if (documents.size() > 1)
-      diag.error(documents[1].Mark(), "",
-                 "a second YAML document starts here (after '---' or '...'): seaflex reads one "
-                 "document per file; delete it, with the '---' or '...' before it, or put it in "
-                 "a file of its own");
+    YAML::Node root = YAML::Load(text);
+    std::istringstream stream(text);
+    YAML::Parser parser(stream);
+    NullHandler first;
+    SecondDocumentProbe second;
+    if (parser.HandleNextDocument(first) && parser.HandleNextDocument(second)) {
+      SecondDocumentProbe third;
+      const bool stuck = parser.HandleNextDocument(third) && third.start.pos == second.start.pos;
+      if (stuck)
+        diag.error(second.start, "",
+                   "YAML syntax error: this text is not part of the document above it and "
+                   "does not start a new one (a plain value cannot start with ',')");
+      else if (second.content)
+        diag.error(second.first_node, "",
+                   "a second YAML document starts here (after '---' or '...'): seaflex reads "
+                   "one document per file; delete it, with the '---' or '...' before it, or put "
+                   "it in a file of its own");
+    }
     diag.throw_if_any();
-    return documents.empty() ? YAML::Node() : documents.front();
+    return root;
   } catch (const YAML::ParserException& e) {
     diag.error(e.mark, "", fmt::format("YAML syntax error: {}", e.msg));
     diag.throw_if_any();
