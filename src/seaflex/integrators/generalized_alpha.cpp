@@ -88,6 +88,9 @@ void GeneralizedAlpha::start(const Dae& dae, State& state) {
                                   initial_solver_.message()),
                       state.t);
   rhs_.head(n_) = eval_.Q;
+  // from statics: the equilibrium's round-off is not a load (model/state.hpp); what the
+  // dynamic forces at t0 add to the static ones (a wave, a changed load) still accelerates
+  if (state.static_residual.size() == n_) rhs_.head(n_) -= state.static_residual;
   rhs_.tail(m_) = eval_.gamma;
   initial_solver_.solve(rhs_, sol_);
   if (!sol_.allFinite())

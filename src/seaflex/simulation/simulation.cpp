@@ -142,6 +142,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
     if (fresh) {
       dae_.start(state);
       integrator_.start(dae_, state);
+      state.static_residual = VecX();  // used by the start only (model/state.hpp)
       record(state);
     }
     long& ticks = pos.ticks;

@@ -333,6 +333,9 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
           settings.time);
     }
   }
+  // the residual of the converged state at load factor 1 (every Newton step ends with the
+  // residual of the state it leaves): what dynamics takes as round-off (model/state.hpp)
+  state.static_residual = newton.r_;
   return report;
 }
 
