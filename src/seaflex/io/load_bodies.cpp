@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "seaflex/constraints/joint.hpp"
+#include "seaflex/elements/catenary_shape.hpp"
 #include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/math/rotation.hpp"
@@ -61,7 +62,7 @@ bool check_slender(MapReader& r, std::string_view key, double diameter, double l
   return false;
 }
 
-std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, LoadContext&) {
+std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, LoadContext& ctx) {
   bool ok = true;
   // geometry: start/end or polyline
   std::optional<BeamGeometry> geometry;
@@ -69,7 +70,13 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
   const bool has_start = r.has("start"), has_end = r.has("end");
   const bool straight = has_start || has_end;
   const bool poly = r.has("polyline");
-  if (straight && poly) {
+  const bool has_length = r.has("length");
+  if (poly && has_length) {
+    r.has("elements");
+    r.error("length",
+            "applies to start and end only: a polyline's unstretched length is its own length");
+    ok = false;
+  } else if (straight && poly) {
     r.has("elements");
     r.error("polyline", "give either start and end, or polyline, not both");
     ok = false;
@@ -142,7 +149,39 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
       r.error("end", "coincides with start: the beam needs a length greater than 0 m");
       ok = false;
     }
-    if (start && end && n && ok) geometry = BeamGeometry::straight(*start, *end, *n);
+    const auto length = r.number("length", Need::kOptional, NumberRule::positive("m"));
+    if (start && end && n && ok) {
+      const double chord = (*end - *start).norm();
+      if (!length || *length == chord) {
+        geometry = BeamGeometry::straight(*start, *end, *n);
+      } else if (*length < chord) {
+        // shorter than the chord: straight, and stretched from the start (a pretension)
+        if (*length < 0.5 * chord) {
+          r.error("length", fmt::format("{:g} m is less than half the distance between start "
+                                        "and end ({:g} m): the line would start stretched by "
+                                        "more than 100 %",
+                                        *length, chord));
+          ok = false;
+        } else {
+          geometry = BeamGeometry::straight(*start, *end, *n);
+          geometry->element_lengths.assign(*n, *length / *n);
+        }
+      } else {
+        // longer: a slack line, whose first guess is its catenary (elements/catenary_shape),
+        // laid on the seabed under its lower end where it would dip below it
+        std::optional<double> seabed_z;
+        if (ctx.model.seabed) {
+          const Vec3& lower = start->z() <= end->z() ? *start : *end;
+          seabed_z = ctx.model.seabed->at(lower.x(), lower.y()).height;
+        }
+        try {
+          geometry = catenary_geometry(*start, *end, *length, *n, seabed_z);
+        } catch (const std::invalid_argument& e) {
+          r.error("length", e.what());
+          ok = false;
+        }
+      }
+    }
   }
 
   // section: outer/inner diameter, or area and second moment
