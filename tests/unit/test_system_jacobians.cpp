@@ -1,6 +1,7 @@
 // The assembled system: its Newton matrix equals the central difference of the assembled
 // forces (every body, force and constraint together), C_q equals the difference of C,
 // and the mass block is the assembled eq. (10).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "seaflex/constraints/coordinate_lock.hpp"
@@ -205,25 +206,30 @@ TEST(SystemJacobians, MassTimesAccelerationDerivative) {
 
 // the same for the added mass of a Morison beam, which turns with the beam's axis:
 // Ca rho A (I - t t^T) at every wet quadrature point (a tilted, bent riser in water)
+// (and, with an axial added mass, Ca_ax rho A t t^T besides)
 TEST(SystemJacobians, TurningAddedMassDerivative) {
-  io::Model model = io::load_model_text(R"(
-environment: {gravity: 9.81, water: {density: 1025, depth: 100}}
+  for (const char* coefficients : {"{cd: 1.0, cm: 2.0}", "{cd: 1.0, cm: 2.0, ca_axial: 0.4}"}) {
+    io::Model model = io::load_model_text(fmt::format(R"(
+environment: {{gravity: 9.81, water: {{density: 1025, depth: 100}}}}
 bodies:
-  riser: {type: ancf_beam, start: [0, 0, -100], end: [20, 5, -10], elements: 4,
-          outer_diameter: 0.5, inner_diameter: 0.4, youngs_modulus: 210e9, density: 7850}
+  riser: {{type: ancf_beam, start: [0, 0, -100], end: [20, 5, -10], elements: 4,
+          outer_diameter: 0.5, inner_diameter: 0.4, youngs_modulus: 210e9, density: 7850}}
 hydrodynamics:
-  riser: {cd: 1.0, cm: 2.0}
+  riser: {}
 )",
-                                        "morison.yaml");
-  System& sys = *model.system;
-  State s = sys.initial_state();
-  const Index n = sys.num_coordinates();
-  s.q += 0.05 * VecX::Random(n);  // bent and stretched
-  const VecX a = VecX::Random(n);
-  // the d(M a)/dq part alone: the matrix with the acceleration minus the one without
-  const MatX dMa = matrix_block(sys, s, MatrixScales{0.0, 1.0, 0.0}, &a) -
-                   matrix_block(sys, s, MatrixScales{0.0, 1.0, 0.0}, nullptr);
-  const MatX fd = mass_times_derivative_fd(sys, s, a);
-  EXPECT_GT(fd.norm(), 1.0);
-  EXPECT_LT((dMa - fd).lpNorm<Eigen::Infinity>(), 1e-6 * fd.lpNorm<Eigen::Infinity>());
+                                                      coefficients),
+                                          "morison.yaml");
+    System& sys = *model.system;
+    State s = sys.initial_state();
+    const Index n = sys.num_coordinates();
+    s.q += 0.05 * VecX::Random(n);  // bent and stretched
+    const VecX a = VecX::Random(n);
+    // the d(M a)/dq part alone: the matrix with the acceleration minus the one without
+    const MatX dMa = matrix_block(sys, s, MatrixScales{0.0, 1.0, 0.0}, &a) -
+                     matrix_block(sys, s, MatrixScales{0.0, 1.0, 0.0}, nullptr);
+    const MatX fd = mass_times_derivative_fd(sys, s, a);
+    EXPECT_GT(fd.norm(), 1.0);
+    EXPECT_LT((dMa - fd).lpNorm<Eigen::Infinity>(), 1e-6 * fd.lpNorm<Eigen::Infinity>())
+        << coefficients;
+  }
 }

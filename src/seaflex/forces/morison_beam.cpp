@@ -56,8 +56,10 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, co
   const double cd = 0.5 * rho * c.cd * D;  // thesis eq. (176)
   const double cax = 0.5 * rho * c.cd_axial * std::numbers::pi * D;
   const double ci = rho * c.cm * area;
-  const Vec3 an = fl.acceleration - tt.dot(fl.acceleration) * tt;
-  out.f = cd * unn * un + cax * std::abs(ua) * ua * tt + ci * an;
+  const double cia = rho * c.cm_axial * area;
+  const double aa = tt.dot(fl.acceleration);
+  const Vec3 an = fl.acceleration - aa * tt;
+  out.f = cd * unn * un + cax * std::abs(ua) * ua * tt + ci * an + cia * aa * tt;
   if (c.buoyancy && with_buoyancy) out.f.z() += rho * ocean_->g() * area;
   out.f *= load_factor;  // an external load: statics steps it in with the load factor
   if (!derivatives) return out;
@@ -70,8 +72,8 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, co
   const Mat3 dun_dt = -(tt * u.transpose() + ua * Mat3::Identity());
   const Mat3 dfa_dt =
       cax * (2.0 * std::abs(ua) * tt * u.transpose() + std::abs(ua) * ua * Mat3::Identity());
-  const Mat3 dfi_dt =
-      -ci * (tt * fl.acceleration.transpose() + tt.dot(fl.acceleration) * Mat3::Identity());
+  // d/dt [ci (a - (t.a) t) + cia (t.a) t] = (cia - ci) (t a^T + (t.a) I)
+  const Mat3 dfi_dt = (cia - ci) * (tt * fl.acceleration.transpose() + aa * Mat3::Identity());
   out.df_drp = load_factor * (Dn * dun_dt + dfa_dt + dfi_dt) * dt_drp;
   out.df_dv *= load_factor;
   return out;
@@ -83,7 +85,10 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
   const bool want_matrix = target.matrix != nullptr && s.any();
   const double area_i = 0.25 * std::numbers::pi * c.internal_diameter * c.internal_diameter;
   const double m_int = c.internal_density * area_i;  // contents' mass per length
-  const double ca_mass = ocean_->rho() * c.ca * 0.25 * std::numbers::pi * c.diameter * c.diameter;
+  const double area = 0.25 * std::numbers::pi * c.diameter * c.diameter;
+  const double ca_mass = ocean_->rho() * c.ca * area;
+  const double ca_axial_mass = ocean_->rho() * c.ca_axial * area;
+  const bool added_mass = ca_mass != 0.0 || ca_axial_mass != 0.0;
   // the beam's even, then odd elements; in parallel within each (core/parallel.hpp)
   for_each_colored(beam_.coloring(), [&](int k) {
     Mat12 K;
@@ -114,20 +119,23 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         for (int i = 0; i < 4; ++i) Q.segment<3>(3 * i) += (dx * sh[i]) * pl.f;  // eq. (177)
       }
       if (!want_matrix) continue;
-      if (s.km != 0.0 && ca_mass != 0.0) {
+      if (s.km != 0.0 && added_mass) {
         const Vec3 tt = rp.normalized();
-        add_shape_product(K, sh, sh, ca_mass * (Mat3::Identity() - tt * tt.transpose()), s.km * dx);
+        add_shape_product(
+            K, sh, sh, ca_mass * Mat3::Identity() + (ca_axial_mass - ca_mass) * tt * tt.transpose(),
+            s.km * dx);
       }
-      if (s.kq != 0.0 && ca_mass != 0.0 && target.acceleration) {
-        // the added mass turns with the axis: d/dr' [ca (I - t t^T) a] with t = r'/|r'|,
-        // dt/dr' = (I - t t^T)/|r'|, is -ca (t a^T + (t.a) I) (I - t t^T)/|r'|
+      if (s.kq != 0.0 && added_mass && target.acceleration) {
+        // the added mass turns with the axis: d/dr' [(ca I + (ca_ax - ca) t t^T) a] with
+        // t = r'/|r'|, dt/dr' = (I - t t^T)/|r'|, is (ca_ax - ca) (t a^T + (t.a) I) (I - t
+        // t^T)/|r'|
         const Vec12 ea = target.acceleration->segment<12>(beam_.node_index(k));
         const Vec3 ax = ancf_cable::as_nodes(ea) * sh;
         const double stretch = rp.norm();
         const Vec3 tt = rp / stretch;
         const Mat3 P = Mat3::Identity() - tt * tt.transpose();
-        const Mat3 D =
-            -ca_mass * (tt * ax.transpose() + tt.dot(ax) * Mat3::Identity()) * P / stretch;
+        const Mat3 D = (ca_axial_mass - ca_mass) *
+                       (tt * ax.transpose() + tt.dot(ax) * Mat3::Identity()) * P / stretch;
         add_shape_product(K, sh, shx, D, s.kq * dx);
       }
       if (s.kv != 0.0) add_shape_product(K, sh, sh, pl.df_dv, -s.kv * dx);

@@ -5,8 +5,14 @@
 //   axial drag    f_a = 1/2 rho Cd_ax pi D |u_a| u_a t,   u_a = t . u
 //   fluid inertia f_i = rho Cm A a_n                 (a_n normal part of the fluid
 //                                                     acceleration; A = pi D^2/4)
-//   added mass    -rho Ca A (I - t t^T) r_ddot       (in the mass matrix:
-//                                                     int S^T rho Ca A (I - t t^T) S dx)
+//   axial inertia f_ia = rho Cm_ax A (t . a) t       (Froude-Krylov, Cm_ax = 1 + Ca_ax:
+//                                                     the axial part of the pressure
+//                                                     gradient -rho a, applied as a
+//                                                     distributed load like buoyancy, the
+//                                                     hydrostatic one, for the effective
+//                                                     tension; OrcaFlex's axial terms)
+//   added mass    -rho A (Ca (I - t t^T) + Ca_ax t t^T) r_ddot   (in the mass matrix:
+//                                                     int S^T rho A (...) S dx)
 //   buoyancy      rho g A e_z on the submerged part  (external pressure resultant; the
 //                                                     tension reported is the effective
 //                                                     tension)
@@ -36,6 +42,8 @@ struct MorisonBeamCoefficients {
   double cd_axial = 0.0;           ///< axial drag coefficient (on the perimeter pi D)
   double ca = 0.0;                 ///< normal added mass coefficient
   double cm = 0.0;                 ///< inertia coefficient on the fluid acceleration
+  double ca_axial = 0.0;           ///< axial added mass coefficient
+  double cm_axial = 0.0;           ///< axial inertia coefficient (Froude-Krylov + Ca_ax)
   bool buoyancy = true;            ///< buoyancy of the submerged part
   double internal_density = 0.0;   ///< rho_i of the contents (kg/m^3), 0 = empty
   double internal_diameter = 0.0;  ///< D_i of the contents (m)
@@ -50,7 +58,9 @@ class MorisonBeam : public Force {
   void declare_blocks(math::SparseBlockAssembler& matrix) override;
   void assemble(const State& state, double load_factor, AssemblyTarget& target) const override;
   double potential_energy(const State&) const override { return 0.0; }
-  bool constant_mass() const override { return coefficients_.ca == 0.0; }
+  bool constant_mass() const override {
+    return coefficients_.ca == 0.0 && coefficients_.ca_axial == 0.0;
+  }
 
   const MorisonBeamCoefficients& coefficients() const { return coefficients_; }
   const AncfBeam& beam() const { return beam_; }

@@ -177,6 +177,12 @@ void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
                         "than its diameter; seaflex uses m, not mm ({:g} mm = {:g} m)",
                         c.diameter, beam.length(), c.diameter, c.diameter / 1000.0));
   std::tie(c.cd, c.cd_axial, c.cm, c.ca) = read_morison_coefficients(r);
+  // axial: added mass ca_axial (default 0) and inertia cm_axial, by default the Froude-Krylov
+  // 1 plus ca_axial when the beam has a water inertia at all (cm > 0), as cm = 1 + ca
+  const NumberRule rule = NumberRule::range(0.0, 10.0, "");
+  c.ca_axial = r.number("ca_axial", Need::kOptional, rule).value_or(0.0);
+  c.cm_axial =
+      r.number("cm_axial", Need::kOptional, rule).value_or(c.ca_axial + (c.cm > 0.0 ? 1.0 : 0.0));
   if (r.has("buoyancy"))
     c.buoyancy =
         r.choice("buoyancy", Need::kRequired, {"true", "false"}).value_or("true") == "true";
