@@ -247,6 +247,46 @@ def solve_shooting(X, h, L, w, EA, CB=0.0, stretch=stretch_hooke, steps=200, gue
     return c
 
 
+# --- the touchdown point on an elastic seabed ------------------------------------------------
+
+def touchdown_boundary_layer(w, H, EI, k):
+    """How a line with bending stiffness EI on a seabed of stiffness k (N/m per m of line,
+    tensionless) differs from the classic catenary on a rigid seabed near its touchdown
+    point: small slopes, the horizontal tension H. Vertical equilibrium of the line,
+    z the height above the seabed, x along the line towards the fairlead (z4, z2 the fourth
+    and second derivatives):
+
+      in contact (z < 0):   EI z4 - H z2 + k z = -w     (far from it z = -w/k, the sinkage)
+      suspended (z > 0):    EI z4 - H z2       = -w
+
+    The contact ends at x0 (z = 0 there), where z and its first three derivatives are
+    continuous. Taking x0 = 0: in contact z = -w/k + A1 e^{r1 x} + A2 e^{r2 x} (r the roots
+    with positive real part of EI r^4 - H r^2 + k = 0), suspended z = w/(2H) x^2 + a x + b +
+    c e^{-x/lam}, lam = sqrt(EI/H); five linear conditions give A1, A2, a, b, c. Away from
+    the touchdown the suspended line is the parabola (catenary) w/(2H) (x - x_v)^2 + z_v: the
+    catenary of a rigid seabed at height z_v whose touchdown point is at x_v = -a H/w.
+
+    Returns (extra, z_v): the contact extends extra = -x_v beyond that catenary's touchdown
+    (the laid length is the rigid one plus extra), and z_v (< 0) is where its seabed lies.
+    Limits: EI -> 0 gives extra = sqrt(H/k), z_v = -w/(2k) (a string on an elastic
+    foundation); k -> infinity gives extra = -lam, z_v = w lam^2 / (2H) (a beam lifts off
+    lam before a cable would)."""
+    if EI <= 0.0:
+        return math.sqrt(H / k), -w / (2 * k)
+    lam = math.sqrt(EI / H)
+    roots = [r for r in np.roots([EI, 0.0, -H, 0.0, k]) if r.real > 0.0]
+    r1, r2 = roots[0], roots[1]
+    M = np.array([[1, 1, 0, 0, 0],
+                  [1, 1, 0, -1, -1],
+                  [r1, r2, -1, 0, 1 / lam],
+                  [r1 ** 2, r2 ** 2, 0, 0, -1 / lam ** 2],
+                  [r1 ** 3, r2 ** 3, 0, 0, 1 / lam ** 3]], dtype=complex)
+    rhs = np.array([w / k, w / k, 0, w / H, 0], dtype=complex)
+    _, _, a, b, _ = np.linalg.solve(M, rhs)
+    xv = -a.real * H / w
+    return -xv, b.real - w / (2 * H) * xv * xv
+
+
 # --- unit tests: method 1 against method 2 -------------------------------------------------
 
 LINE = dict(L=500.0, w=525.73, EA=7.854e8)     # 0.1 m wire-like line (the seaflex tests')
@@ -307,6 +347,20 @@ class ElasticCatenary(unittest.TestCase):
             self.assertAlmostEqual(z, 140.0, delta=1e-8)
             x, z = a.position(a.LB)
             self.assertEqual(z, 0.0)
+
+    def test_touchdown_boundary_layer_limits(self):
+        w, H = 525.67, 67628.0
+        extra, zv = touchdown_boundary_layer(w, H, 1e-9, 1e6)   # a string on a soft seabed
+        self.assertAlmostEqual(extra / math.sqrt(H / 1e6), 1.0, delta=1e-6)
+        self.assertAlmostEqual(zv / (-w / 2e6), 1.0, delta=1e-6)
+        lam = math.sqrt(1e3 / H)
+        extra, zv = touchdown_boundary_layer(w, H, 1e3, 1e20)   # a beam on a rigid seabed
+        self.assertAlmostEqual(extra / -lam, 1.0, delta=1e-3)
+        self.assertAlmostEqual(zv / (w * lam * lam / (2 * H)), 1.0, delta=1e-6)
+        extra, zv = touchdown_boundary_layer(w, H, 1e3, 1e6)    # both
+        print("boundary layer, EI = 1e3 N m^2, k = 1e6 N/m^2: contact %.4f m beyond the "
+              "rigid catenary's touchdown, its seabed %.3g m below the surface" % (extra, -zv))
+        self.assertTrue(-lam < extra < math.sqrt(H / 1e6))
 
     def test_green_lagrange_law_differs_by_the_square_of_the_strain(self):
         """seaflex's strain law against Hooke's: lambda - 1 differs by 1.5 (T/EA)^2, which
