@@ -32,11 +32,19 @@ equations as MAP++ and MoorDyn's/MoorPy's `catenary`):
   Newton on (H, V) (the two equations' residuals, a finite-difference Jacobian, a damped
   step that keeps H > 0), from the first guess of the FAST routine.
 
+  With a floor T0 (`solve(..., floor=T0)`; an extension of Jonkman's equations, not in
+  them): a line first in equilibrium without friction at laid tension T0, then pulled out
+  monotonically, slides only where the pull raises its tension above T0, so T(s) =
+  max(T0, H - C_B w (L_B - s)) along the laid part, the anchor tension is
+  max(T0, H - C_B w L_B), and the last term of X becomes the laid part's stretch with
+  that profile, minus H L_B / EA. With T0 = 0 it is Jonkman's equation.
+
 Method 2, shooting (`solve_shooting`): the line's equilibrium ODE integrated by classical
 RK4 in s from the fairlead down to the anchor, for a trial (H, V) at the fairlead:
   suspended:  dTx/ds = 0, dTz/ds = w, dx/ds = lambda(T) Tx/T, dz/ds = lambda(T) Tz/T
   laid (from the arc length where Tz reaches 0 on down):
-              dT/ds = C_B w while T > 0 (0 once it reaches 0), dx/ds = lambda(T), z = 0
+              dT/ds = C_B w while T > T0 (0 once it reaches T0, default 0: the step that
+              reaches it is split there), dx/ds = lambda(T), z = 0
 with the stretch lambda(T) of a stress-strain law: Hooke's, lambda = 1 + T/EA (the law of
 the classic equations), or the Green-Lagrange law of seaflex's `axial_model: exact`
 (docs/results-format.md: T = EA eps |r'|, eps = (|r'|^2 - 1)/2, i.e. EA lambda (lambda^2 -
@@ -57,10 +65,10 @@ class Catenary:
     """A solution: fairlead forces H, V (N), laid length L_B (m, unstretched), anchor forces
     HA, VA (N), and the line's data."""
 
-    def __init__(self, H, V, LB, HA, VA, X, h, L, w, EA, CB, iterations):
+    def __init__(self, H, V, LB, HA, VA, X, h, L, w, EA, CB, floor, iterations):
         self.H, self.V, self.LB, self.HA, self.VA = H, V, LB, HA, VA
         self.X, self.h, self.L, self.w, self.EA, self.CB = X, h, L, w, EA, CB
-        self.iterations = iterations
+        self.floor, self.iterations = floor, iterations
 
     @property
     def fairlead_tension(self):
@@ -81,7 +89,7 @@ class Catenary:
             return math.hypot(H, w * (s - LB) + self.VA)
         if CB == 0.0:
             return H
-        return max(H - CB * w * (LB - s), 0.0)
+        return min(H, max(H - CB * w * (LB - s), self.floor))
 
     def position(self, s):
         """(x, z) of the point at unstretched arc length s from the anchor (Hooke's law),
@@ -89,14 +97,13 @@ class Catenary:
         H, w, EA, LB, CB = self.H, self.w, self.EA, self.LB, self.CB
         # the laid part: x = s + integral of T/EA
         sl = min(s, LB)
-        if CB == 0.0 or LB == 0.0:
+        if CB == 0.0 or LB == 0.0 or H <= self.floor:
             stretch = H * sl / EA
         else:
-            s0 = max(0.0, LB - H / (CB * w))    # where the tension rises from zero
-            if sl <= s0:
-                stretch = 0.0
-            else:
-                stretch = 0.5 * (self.tension(s0) + self.tension(sl)) * (sl - s0) / EA
+            # where the tension rises from the floor (zero, or the tension before the pull)
+            s0 = min(max(0.0, LB - (H - self.floor) / (CB * w)), sl)
+            stretch = (self.floor * s0
+                       + 0.5 * (self.tension(s0) + self.tension(sl)) * (sl - s0)) / EA
         if s <= LB:
             return sl + stretch, 0.0
         # the suspended part from the touchdown point (vertical force VA there)
@@ -108,7 +115,7 @@ class Catenary:
         return x, z
 
 
-def _equations(H, V, X, h, L, w, EA, CB):
+def _equations(H, V, X, h, L, w, EA, CB, floor=0.0):
     """The residuals of the closed-form equations (method 1) for the trial (H, V)."""
     if V >= w * L:     # fully suspended
         va = V - w * L
@@ -118,9 +125,12 @@ def _equations(H, V, X, h, L, w, EA, CB):
     else:
         LB = L - V / w
         x = LB + H / w * math.asinh(V / H) + H * L / EA
-        if CB > 0.0:
+        if CB > 0.0 and floor == 0.0:      # Jonkman's equation
             a = LB - H / (CB * w)
             x += CB * w / (2 * EA) * (-LB * LB + a * max(a, 0.0))
+        elif CB > 0.0 and H > floor:      # the same with the floor: the laid part's stretch
+            d = min((H - floor) / (CB * w), LB)     # the length that has slid
+            x += (floor * (LB - d) + 0.5 * (H + max(H - CB * w * d, floor)) * d - H * LB) / EA
         z = H / w * (math.sqrt(1 + (V / H) ** 2) - 1) + V * V / (2 * EA * w)
     return np.array([x - X, z - h])
 
@@ -163,20 +173,26 @@ def _newton(residual, H, V, scale, tol=1e-13, max_iterations=200):
     raise RuntimeError("catenary Newton did not converge: residual %s" % r)
 
 
-def _result(H, V, X, h, L, w, EA, CB, iterations):
+def _result(H, V, X, h, L, w, EA, CB, floor, iterations):
     if V >= w * L:
         LB, HA, VA = 0.0, H, V - w * L
     else:
         LB = L - V / w
-        HA, VA = (max(H - CB * w * LB, 0.0) if CB > 0.0 else H), 0.0
-    return Catenary(H, V, LB, HA, VA, X, h, L, w, EA, CB, iterations)
+        HA, VA = (min(H, max(H - CB * w * LB, floor)) if CB > 0.0 else H), 0.0
+    return Catenary(H, V, LB, HA, VA, X, h, L, w, EA, CB, floor, iterations)
 
 
-def solve(X, h, L, w, EA, CB=0.0):
-    """Method 1: the closed-form elastic catenary with seabed contact and friction."""
+def solve(X, h, L, w, EA, CB=0.0, floor=0.0):
+    """Method 1: the closed-form elastic catenary with seabed contact and friction.
+
+    floor (N, default 0: Jonkman's equations): a tension that friction cannot take away
+    from the laid line. A line in equilibrium without friction at tension T0, then pulled
+    out monotonically, slides only where the pull raises its tension above T0; the part near
+    the anchor keeps T0: T(s) = max(T0, H - C_B w (L_B - s)), and the anchor tension is
+    max(T0, H - C_B w L_B) (the laid part's stretch, the integral of T/EA, follows)."""
     H, V = _first_guess(X, h, L, w)
-    H, V, it = _newton(lambda a, b: _equations(a, b, X, h, L, w, EA, CB), H, V, w * L)
-    return _result(H, V, X, h, L, w, EA, CB, it)
+    H, V, it = _newton(lambda a, b: _equations(a, b, X, h, L, w, EA, CB, floor), H, V, w * L)
+    return _result(H, V, X, h, L, w, EA, CB, floor, it)
 
 
 # --- method 2: shooting ------------------------------------------------------------------
@@ -211,7 +227,7 @@ def _rk4(f, y, s0, s1, n):
     return y
 
 
-def shoot(H, V, L, w, EA, CB=0.0, stretch=stretch_hooke, steps=200):
+def shoot(H, V, L, w, EA, CB=0.0, stretch=stretch_hooke, steps=200, floor=0.0):
     """Integrate the line from the fairlead (at (0, 0), s = L) down to the anchor (s = 0)
     for the fairlead forces (H, V); returns the anchor's (x, z) relative to the fairlead
     and the anchor's horizontal tension."""
@@ -227,23 +243,34 @@ def shoot(H, V, L, w, EA, CB=0.0, stretch=stretch_hooke, steps=200):
         return y[0], y[1], y[2]
 
     def laid(s, y):                     # y = x, T; z stays at the touchdown point's
-        return np.array([stretch(max(y[1], 0.0), EA), CB * w if y[1] > 0.0 else 0.0])
+        return np.array([stretch(max(y[1], 0.0), EA), CB * w if y[1] > floor else 0.0])
 
-    yl = _rk4(laid, np.array([y[0], y[2]]), s_td, 0.0, steps)
+    # RK4 steps; a step in which T reaches the floor is split there (the event located by
+    # the secant of T over the step, exact while dT/ds is constant), so that T stops at it
+    yl, s, ds = np.array([y[0], y[2]]), s_td, -s_td / steps
+    for _ in range(steps):
+        y1 = _rk4(laid, yl, s, s + ds, 1)
+        if yl[1] > floor and y1[1] < floor:
+            theta = (yl[1] - floor) / (yl[1] - y1[1])
+            ym = _rk4(laid, yl, s, s + theta * ds, 1)
+            ym[1] = floor
+            y1 = _rk4(laid, ym, s + theta * ds, s + ds, 1)
+        yl, s = y1, s + ds
     return yl[0], y[1], max(yl[1], 0.0)
 
 
-def solve_shooting(X, h, L, w, EA, CB=0.0, stretch=stretch_hooke, steps=200, guess=None):
+def solve_shooting(X, h, L, w, EA, CB=0.0, stretch=stretch_hooke, steps=200, guess=None,
+                   floor=0.0):
     """Method 2: (H, V) such that the integrated line ends at the anchor."""
     H, V = guess if guess is not None else _first_guess(X, h, L, w)
 
     def residual(a, b):
-        xa, za, _ = shoot(a, b, L, w, EA, CB, stretch, steps)
+        xa, za, _ = shoot(a, b, L, w, EA, CB, stretch, steps, floor)
         return np.array([-xa - X, -za - h])
 
     H, V, it = _newton(residual, H, V, w * L, tol=1e-12)
-    c = _result(H, V, X, h, L, w, EA, CB, it)
-    c.HA = shoot(H, V, L, w, EA, CB, stretch, steps)[2]
+    c = _result(H, V, X, h, L, w, EA, CB, floor, it)
+    c.HA = shoot(H, V, L, w, EA, CB, stretch, steps, floor)[2]
     return c
 
 
@@ -323,6 +350,19 @@ class ElasticCatenary(unittest.TestCase):
         self.assertEqual(a.HA, 0.0)
         self.assertLess(a.H, a.CB * a.w * a.LB)
         self.agree(a, b)
+
+    def test_friction_with_a_floor(self):
+        """The line pulled out from its frictionless state (tension T0 = 50 kN laid): the
+        part near the anchor has not slid (partly slid), or all of it has (fully slid)."""
+        for X, what in ((445.0, "partly slid"), (465.0, "fully slid")):
+            a = solve(X, 140.0, CB=0.3, floor=5.0e4, **LINE)
+            b = solve_shooting(X, 140.0, CB=0.3, floor=5.0e4, **LINE)
+            print("floor 50 kN, %s: closed form %r\n            shooting    %r" % (what, a, b))
+            self.agree(a, b)
+            self.assertEqual(a.HA > 5.0e4, what == "fully slid")
+            x, z = a.position(a.L)
+            self.assertAlmostEqual(x, X, delta=1e-8)
+            self.assertAlmostEqual(z, 140.0, delta=1e-8)
 
     def test_fully_suspended(self):
         a = solve(475.0, 140.0, **LINE)
