@@ -294,12 +294,13 @@ class ChainHardCase(SeaflexCase):
         fair = math.hypot(*[row["chain.n200.reaction.f%s" % c] for c in "xyz"])
         k = 1.0e6 * CHAIN_DIAMETER
         rigid = ec.solve(CHAIN_SPAN, CHAIN_HEIGHT, CHAIN_LENGTH, CHAIN_W, CHAIN_EA)
-        _, zv = ec.touchdown_boundary_layer(CHAIN_W, rigid.H, CHAIN_EA / CHAIN_AREA * 1e-8, k)
+        extra, zv = ec.touchdown_boundary_layer(CHAIN_W, rigid.H, CHAIN_EA / CHAIN_AREA * 1e-8, k)
         ref = ec.solve(CHAIN_SPAN, CHAIN_HEIGHT - zv, CHAIN_LENGTH, CHAIN_W, CHAIN_EA)
         print("\nchain, %d load step(s): %s Newton iterations; fairlead tension %.6g N vs "
-              "%.6g N (%+.2e), laid length %.5g m vs %.5g m"
+              "%.6g N (%+.2e), laid length %.5g m vs %.5g m (rigid %.5g m + boundary layer)"
               % (load_steps, newton_iterations(p.stdout), fair, ref.fairlead_tension,
-                 fair / ref.fairlead_tension - 1, row["chain.seabed.laid_length"], ref.LB))
+                 fair / ref.fairlead_tension - 1, row["chain.seabed.laid_length"],
+                 ref.LB + extra, ref.LB))
         return fair / ref.fairlead_tension - 1
 
     def test_one_load_step(self):
@@ -309,13 +310,15 @@ class ChainHardCase(SeaflexCase):
     # With 2 load steps (also 20 and 100; 1, 5 and 10 are right) statics reports convergence
     # (relative residual 1e-10) on a spurious equilibrium: the line folds into two Z-shaped
     # kinks near s = 800 and 860 m (strain 3.4 %, curvature 0.5 1/m there), lifts its whole
-    # laid length off the seabed and carries a fairlead tension of 3.6 MN instead of the
-    # catenary's 0.68 MN (seaflex 0.1.0, 2026-11-26). With EI = 6.8e3 N m^2 the fold costs
-    # almost nothing, and the first load increment (87 iterations from the slack guess)
-    # drives the line into it.
+    # laid length off the seabed and carries a fairlead tension of 3.6 MN (2 steps; 6.8 MN
+    # with 20) instead of the catenary's 0.68 MN (seaflex 0.1.0, 2026-11-26). With EI =
+    # 6.8e3 N m^2 the fold costs almost nothing, and the first load increment (87 iterations
+    # from the slack guess) drives the line into it. Two step counts, so that a build whose
+    # round-off happens to avoid one fold still shows the failure.
     @unittest.expectedFailure
-    def test_two_load_steps(self):
-        self.assertLess(abs(self.solve(2)), TOLERANCE)
+    def test_more_load_steps(self):
+        errors = [self.solve(n) for n in (2, 20)]
+        self.assertLess(max(abs(e) for e in errors), TOLERANCE)
 
 
 if __name__ == "__main__":
