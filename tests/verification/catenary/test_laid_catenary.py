@@ -27,7 +27,7 @@ What the analytic catenary leaves out, and the tolerances:
   catenary on a seabed 0.2 mm lower. The reference laid length is that catenary's plus the
   0.24 m (0.09 % of the laid length: inside the 0.2 % either way);
 * bending stiffness: its boundary layer sqrt(EI/H) = 0.12 m is in the above; its effect on
-  the tensions, of order EI/(H l^2) over the suspended length, is below 1e-7;
+  the tensions, of order EI/(H l^2) over the suspended length l, is 3e-7;
 * the strain law: seaflex's Green-Lagrange law against Hooke's changes H by 4e-7
   (elastic_catenary's test);
 * the discretization: 2.5 m cubic elements resolve the catenary; the laid length is
