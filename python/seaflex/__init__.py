@@ -328,6 +328,26 @@ class Results:
                                  index=pandas.Index(self.time, name="time"))
         return frame
 
+    def statistics(self, start=0.0, channels=None):
+        """Statistics of each channel over the rows from `start` (s) on, as the model's
+        statistics section gives them in statistics.csv (post/statistics.hpp): a
+        pandas.DataFrame indexed by channel with the columns count, duration, min, max,
+        mean, std, skewness, kurtosis, up_crossings, period, peaks."""
+        import math
+        import pandas
+        dt = self._core.output_interval
+        first = 0
+        if start > 0 and dt > 0:  # the first output row at or after start
+            first_time = math.ceil(start / dt - 1e-9) * dt
+            times = self.time
+            while first < len(times) and times[first] < first_time - 1e-6 * dt:
+                first += 1
+        names = self.channels if channels is None else list(channels)
+        rows = {name: _core.record_statistics(self.time, self[name], first) for name in names}
+        frame = pandas.DataFrame.from_dict(rows, orient="index")
+        frame.index.name = "channel"
+        return frame
+
     def __repr__(self):
         return f"<seaflex.Results {len(self)} rows x {len(self._index)} channels>"
 

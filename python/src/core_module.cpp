@@ -32,6 +32,7 @@
 #include "seaflex/io/output_selection.hpp"
 #include "seaflex/io/yaml_reader.hpp"
 #include "seaflex/post/mode_shapes.hpp"
+#include "seaflex/post/statistics.hpp"
 #include "seaflex/solvers/modal.hpp"
 
 namespace py = pybind11;
@@ -310,6 +311,32 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
   return py::make_tuple(d, kind, message, exc);
 }
 
+// the statistics of one record (post/statistics.hpp) over the rows from from_row on, as
+// the statistics recorder accumulates them for statistics.csv
+py::dict record_statistics(py::array_t<double, py::array::forcecast> t,
+                           py::array_t<double, py::array::forcecast> x, py::ssize_t from_row) {
+  if (t.ndim() != 1 || x.ndim() != 1 || t.shape(0) != x.shape(0))
+    throw py::value_error("time and values must be 1-d arrays of the same length");
+  post::StatisticsAccumulator a;
+  const auto tv = t.unchecked<1>();
+  const auto xv = x.unchecked<1>();
+  for (py::ssize_t i = std::max<py::ssize_t>(0, from_row); i < t.shape(0); ++i) a.add(tv(i), xv(i));
+  const post::RecordStatistics r = a.result();
+  py::dict d;
+  d["count"] = r.count;
+  d["duration"] = r.duration;
+  d["min"] = r.min;
+  d["max"] = r.max;
+  d["mean"] = r.mean;
+  d["std"] = r.std;
+  d["skewness"] = r.skewness;
+  d["kurtosis"] = r.kurtosis;
+  d["up_crossings"] = r.up_crossings;
+  d["period"] = r.period;
+  d["peaks"] = r.peaks;
+  return d;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -324,6 +351,12 @@ PYBIND11_MODULE(_core, m) {
                                for (const auto& ch : io::output_channels(c.model))
                                  names.push_back(ch.name);
                                return names;
+                             })
+      .def_property_readonly("output_interval",
+                             [](const CoreModel& c) {
+                               if (!c.model.dynamics) return 0.0;
+                               const auto& d = *c.model.dynamics;
+                               return d.output_interval > 0 ? d.output_interval : d.time_step;
                              })
       .def_property_readonly("has_dynamics",
                              [](const CoreModel& c) { return c.model.dynamics.has_value(); })
@@ -393,5 +426,7 @@ PYBIND11_MODULE(_core, m) {
   });
   m.def("statics", &statics, py::arg("model"), py::arg("output_dir"), py::arg("progress"));
   m.def("run", &run, py::arg("model"), py::arg("output_dir"), py::arg("progress"));
+  m.def("record_statistics", &record_statistics, py::arg("time"), py::arg("values"),
+        py::arg("from_row"));
   m.def("modes", &modes, py::arg("model"), py::arg("count"), py::arg("about_initial"));
 }

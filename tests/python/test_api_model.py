@@ -146,3 +146,26 @@ def test_ctrl_c_stops_the_run_cleanly_with_the_results_so_far():
         assert stopped[name].tobytes() == full[name][:len(stopped)].tobytes(), name
     # the model runs again afterwards (the stop request was cleared)
     assert len(model.run(duration=0.1)) == 11
+
+
+def test_statistics_equal_the_statistics_section(tmp_path):
+    # the riser in waves from 5 s to 20 s with a statistics section: the channel lines of
+    # the command line's statistics.csv, bit for bit
+    d = seaflex.Model.from_file(RISER).to_dict()
+    d["dynamics"]["duration"] = 20.0
+    d["statistics"] = {"start": 5.0}
+    model = seaflex.Model.from_dict(d)
+    path = tmp_path / "riser.yaml"
+    path.write_text(model.yaml)
+    assert cli("run", str(path), "-o", str(tmp_path), "-q").returncode == 0
+    with open(tmp_path / "statistics.csv", newline="") as f:
+        lines = {row["channel"]: row for row in csv.DictReader(f)}
+    results = model.run()
+    table = results.statistics(start=5.0)
+    assert list(table.index) == results.channels
+    assert table.loc["riser.n10.x", "count"] == 31  # rows at 5, 5.5, ..., 20 s
+    for name in results.channels:
+        for column in table.columns:
+            expected = float(lines[name][column])
+            got = float(table.loc[name, column])
+            assert got == expected or (np.isnan(got) and np.isnan(expected)), (name, column)
