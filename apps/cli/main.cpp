@@ -5,13 +5,8 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
-#include <chrono>
-#include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <numbers>
 #include <optional>
 
 #include "fatigue_command.hpp"
@@ -19,20 +14,18 @@
 #include "option_checks.hpp"
 #include "plot_command.hpp"
 #include "progress_line.hpp"
+#include "seaflex/analysis/bench_run.hpp"
 #include "seaflex/analysis/dynamics_analysis.hpp"
 #include "seaflex/analysis/model_summary.hpp"
+#include "seaflex/analysis/restart_files.hpp"
 #include "seaflex/analysis/result_files.hpp"
 #include "seaflex/analysis/statics_analysis.hpp"
-#include "seaflex/core/checkpoint.hpp"
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/interrupt.hpp"
 #include "seaflex/core/output_file.hpp"
 #include "seaflex/core/parallel.hpp"
-#include "seaflex/io/model_inputs.hpp"
 #include "seaflex/io/model_loader.hpp"
-#include "seaflex/io/output_selection.hpp"
 #include "seaflex/post/mode_shapes.hpp"
-#include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/modal.hpp"
 #include "seaflex/solvers/statics.hpp"
 #include "stats_command.hpp"
@@ -99,89 +92,6 @@ int cmd_statics(const std::string& file, const fs::path& dir, bool quiet,
   return 0;
 }
 
-// Restart files: paths as hex (a path with blanks stays one word).
-std::string to_hex(const std::string& text) {
-  std::string out;
-  for (unsigned char c : text) out += fmt::format("{:02x}", c);
-  return out;
-}
-// the text of `key`, written by to_hex; a located error for anything else
-std::string from_hex(const CheckpointReader& in, const std::string& key) {
-  const std::string hex = in.text(key);
-  const auto digit = [](char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    return -1;
-  };
-  std::string out;
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) {
-    const int hi = digit(hex[i]), lo = digit(hex[i + 1]);
-    if (hi < 0 || lo < 0 || (hi == 0 && lo == 0)) break;
-    out += static_cast<char>(hi * 16 + lo);
-  }
-  if (out.size() * 2 != hex.size() || out.empty())
-    in.fail(key, "not a file name written by seaflex (pairs of lowercase hex digits)");
-  return out;
-}
-
-// The files a checkpoint holds the hash of: the model, then every file it reads.
-std::vector<std::pair<std::string, std::string>> input_hashes(const std::string& model) {
-  std::vector<std::pair<std::string, std::string>> list;
-  for (const auto& f : io::model_input_files(model))
-    list.emplace_back(f, io::input_file_hash(f, "input file"));
-  return list;
-}
-
-// A model or output that a restart file cannot hold yet is refused before anything runs.
-void check_checkpointable(const io::Model& model, const std::string& file) {
-  for (const auto& f : model.system->forces())
-    if (f->has_memory())
-      throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
-                                   fmt::format("restart files do not hold the memory of '{}' "
-                                               "(radiation) yet; run without checkpoints",
-                                               f->name())}});
-  if (model.fatigue)
-    throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
-                                 "restart files do not hold the rainflow counters of the fatigue "
-                                 "section yet; run without checkpoints"}});
-  if (model.output.format != io::OutputFormat::kCsv || model.output.vtk)
-    throw InputError({Diagnostic{file, 0, 0, "--checkpoint-every",
-                                 "restart files continue CSV results only; use --format csv "
-                                 "and no VTK output with checkpoints"}});
-}
-
-// Checkpoints every `rows` output rows into DIR/checkpoint.txt.
-void enable_checkpoints(Simulation& sim, const std::string& file, const fs::path& dir, long rows,
-                        Integrator& integrator, analysis::ResultFiles& outputs,
-                        const cli::ProgressLine& progress) {
-  const std::string model_path = fs::absolute(file).string();
-  const std::string hash = io::input_file_hash(file, "model");
-  const auto inputs = input_hashes(file);  // WAMIT files, tables: a resume needs the same
-  sim.set_checkpoint(rows, [=, &integrator, &outputs, &progress](const State& state,
-                                                                 const SimulationPosition& pos) {
-    CheckpointWriter w;
-    w.put("format", std::string("seaflex-checkpoint-1"));
-    w.put("model", to_hex(model_path));
-    w.put("model_hash", hash);
-    w.put("inputs", static_cast<long>(inputs.size()));
-    for (std::size_t k = 0; k < inputs.size(); ++k) {
-      w.put(fmt::format("input{}.file", k), to_hex(inputs[k].first));
-      w.put(fmt::format("input{}.hash", k), inputs[k].second);
-    }
-    w.put("checkpoint_rows", rows);
-    w.put("wall_s", progress.elapsed());  // the whole run's, so far
-    pos.save(w);
-    w.put("state.t", state.t);
-    w.put("state.q", state.q);
-    w.put("state.v", state.v);
-    w.put("state.lambda", state.lambda);
-    w.put("state.z", state.z);
-    if (!integrator.save(w) || !outputs.save_all(w))
-      throw std::runtime_error("this run cannot be checkpointed");
-    w.write((dir / "checkpoint.txt").string());
-  });
-}
-
 // The summary of a run (fresh, or continued from a checkpoint) on stdout.
 void print_run(const SimulationReport& rep, const io::Model& model, const fs::path& dir,
                const cli::ProgressLine& progress, const SimulationPosition* resume_at,
@@ -223,24 +133,6 @@ analysis::AnalysisHooks run_hooks(cli::ProgressLine*& progress) {
   return hooks;
 }
 
-// the number of output rows between checkpoints every `seconds` (a whole number of rows)
-long checkpoint_rows(const io::DynamicsSettings& d, double seconds, const std::string& file) {
-  const double interval =
-      d.simulation().output_interval > 0.0 ? d.simulation().output_interval : d.time_step;
-  const double rows = seconds / interval;
-  if (!(rows >= 1.0 - 1e-9) || std::abs(rows - std::round(rows)) > 1e-6 * rows)
-    throw InputError(
-        {Diagnostic{file, 0, 0, "--checkpoint-every",
-                    fmt::format("must be a whole number of output intervals ({:g} s), got {:g} s",
-                                interval, seconds)}});
-  if (seconds > d.duration)
-    throw InputError(
-        {Diagnostic{file, 0, 0, "--checkpoint-every",
-                    fmt::format("must not exceed the run's duration ({:g} s), got {:g} s",
-                                d.duration, seconds)}});
-  return std::lround(rows);
-}
-
 int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const OutputOptions& options,
             double checkpoint_every) {
   const io::Model model = load_model(file, options);
@@ -249,8 +141,9 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
                                  "'seaflex run' needs a dynamics section (time_step, duration); "
                                  "see docs/model-format.md"}});
   const auto& d = *model.dynamics;
-  const long rows = checkpoint_every > 0.0 ? checkpoint_rows(d, checkpoint_every, file) : 0;
-  if (rows > 0) check_checkpointable(model, file);
+  const long rows =
+      checkpoint_every > 0.0 ? analysis::checkpoint_rows(d, checkpoint_every, file) : 0;
+  if (rows > 0) analysis::check_checkpointable(model, file);
   analysis::make_output_dir(dir);
   analysis::clear_results(model, dir);
   analysis::AnalysisOutput output;
@@ -275,8 +168,7 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
       analysis::run_dynamics(model, output, hooks, [&](analysis::DynamicsRun& run) {
         line = &progress.emplace(quiet);
         if (rows > 0)
-          enable_checkpoints(run.simulation(), file, dir, rows, run.integrator(), *run.files(),
-                             *line);
+          analysis::enable_checkpoints(run, file, dir, rows, [line] { return line->elapsed(); });
       });
   line->done();
   if (!quiet) print_run(summary.report, model, dir, *line, nullptr, 0.0, summary.design_summary);
@@ -286,88 +178,20 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
 // Continues the run whose last checkpoint is DIR/checkpoint.txt: the joined files are
 // those an uninterrupted run writes, byte for byte.
 int cmd_resume(const fs::path& dir, bool quiet) {
-  const std::string path = (dir / "checkpoint.txt").string();
-  const CheckpointReader in(path);
-  const std::string file = from_hex(in, "model");
-  {
-    // a regular file of bounded size (not /dev/zero, a FIFO or a directory), unchanged
-    std::error_code ec;
-    const auto st = fs::status(file, ec);
-    if (!fs::exists(st))
-      in.fail("model",
-              fmt::format("the model file {} is gone: a restart needs the same model", file));
-    if (!fs::is_regular_file(st))
-      in.fail("model", fmt::format("{} is not a regular file (a directory, device or pipe is not "
-                                   "a model)",
-                                   file));
-    if (fs::file_size(file, ec) > io::kMaxInputFileBytes || ec)
-      in.fail("model", fmt::format("{} has more than {} bytes", file, io::kMaxInputFileBytes));
-    if (io::input_file_hash(file, "model") != in.text("model_hash"))
-      in.fail("model", fmt::format("the model file {} changed since the checkpoint (or is gone): "
-                                   "a restart needs the same model",
-                                   file));
-  }
-  // every file the model reads, as at the checkpoint (a checkpoint of an older seaflex
-  // without the list is refused: it could not tell)
-  const long inputs = in.integer("inputs", 0, 100000);
-  std::vector<std::string> recorded;
-  for (long k = 0; k < inputs; ++k) {
-    const std::string key = fmt::format("input{}.file", k);
-    const std::string f = from_hex(in, key);
-    const std::string hash = io::input_file_hash(f, key);
-    if (hash != in.text(fmt::format("input{}.hash", k)))
-      in.fail(key, fmt::format("the input file {} {} since the checkpoint: a restart needs the "
-                               "same inputs",
-                               f, hash == "absent" ? "is gone" : "changed"));
-    recorded.push_back(f);
-  }
-  if (const auto now = io::model_input_files(file); now != recorded)
-    for (const auto& f : now)
-      if (std::find(recorded.begin(), recorded.end(), f) == recorded.end())
-        in.fail("inputs", fmt::format("the model reads {}, which was not there at the checkpoint: "
-                                      "a restart needs the same inputs",
-                                      f));
   OutputOptions options;
   options.format = "csv";
-  const io::Model model = load_model(file, options);
-  if (!model.dynamics)
-    throw InputError({Diagnostic{file, 0, 0, "dynamics", "the model has no dynamics section"}});
-  check_checkpointable(model, file);
-  const auto& d = *model.dynamics;
-  // the time loop's position: bounded, so that a damaged file cannot run for ever
-  const long nominal = std::lround(d.duration / d.time_step);
-  in.integer("sim.ticks", 0, nominal << 20);  // at most 2^20 ticks per step (adaptive)
-  in.integer("sim.level", 0, 20);
-  in.integer("sim.successes", 0);
-  in.integer("sim.rows", 1, nominal + 1);
-  for (const char* key : {"sim.t0", "sim.scale", "state.t", "sim.min_step"}) in.finite(key);
-  for (const char* key : {"sim.steps", "sim.rejected_steps", "sim.iterations"}) in.integer(key, 0);
-  const long checkpoint_rows = in.integer("checkpoint_rows", 1, nominal);
-  analysis::AnalysisOutput output;
-  output.dir = dir;
-  analysis::DynamicsRun run(model, output, /*resume=*/true);
-  run.files()->restore_all(in);
-  // the state: every vector the size this model needs
-  const State initial = model.system->initial_state();
-  State state = initial;
-  state.t = in.finite("state.t");
-  state.q = in.vector("state.q", initial.q.size());
-  state.v = in.vector("state.v", initial.v.size());
-  state.lambda = in.vector("state.lambda", initial.lambda.size());
-  state.z = in.vector("state.z", initial.z.size());
-  try {
-    run.integrator().restore(*model.system, in);
-  } catch (const std::invalid_argument& e) {
-    in.fail("", e.what());
-  }
-  const SimulationPosition pos = SimulationPosition::load(in);
+  const auto resumed = analysis::read_checkpoint(
+      dir, [&](const std::string& file) { return load_model(file, options); });
+  const io::Model& model = resumed->model;
+  State& state = resumed->state;
+  const SimulationPosition& pos = resumed->position;
+  analysis::DynamicsRun& run = *resumed->run;
   // the progress line and the summary count the whole run: the wall time before the
   // checkpoint, and the fraction of the run done then
-  cli::ProgressLine progress(quiet, in.has("wall_s") ? in.finite("wall_s") : 0.0,
-                             (state.t - pos.t0) / d.duration);
-  enable_checkpoints(run.simulation(), file, dir, checkpoint_rows, run.integrator(), *run.files(),
-                     progress);
-  if (!quiet) fmt::print("resuming {} at t = {:g} s\n", file, state.t);
+  cli::ProgressLine progress(quiet, resumed->wall_s, (state.t - pos.t0) / model.dynamics->duration);
+  analysis::enable_checkpoints(run, resumed->file, dir, resumed->checkpoint_rows,
+                               [&progress] { return progress.elapsed(); });
+  if (!quiet) fmt::print("resuming {} at t = {:g} s\n", resumed->file, state.t);
   cli::ProgressLine* line = &progress;
   const double resume_at_t = state.t;
   const SimulationReport rep = run.run(state, run_hooks(line), &pos);
@@ -417,42 +241,21 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
 // Times a model's dynamics without writing results: statics (when the model starts from
 // it), then the simulation; prints the speed against real time and where the time goes.
 int cmd_bench(const std::string& file, double duration) {
-  using Clock = std::chrono::steady_clock;
-  const auto seconds_since = [](Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-  };
   const io::Model model = load_model(file);
-  if (!model.dynamics)
-    throw InputError({Diagnostic{
-        file, 0, 0, "dynamics", "'seaflex bench' needs a dynamics section (time_step, duration)"}});
-  io::DynamicsSettings d = *model.dynamics;
-  if (duration / d.time_step > 2e9)  // the loader's limit on dynamics.duration
-    throw InputError({Diagnostic{
-        file, 0, 0, "--duration",
-        fmt::format("{:g} s at a time step of {:g} s is {:.3g} steps, more than the limit of 2e9",
-                    duration, d.time_step, duration / d.time_step)}});
-  if (duration > 0.0)
-    d.duration = std::max(d.time_step, std::round(duration / d.time_step) * d.time_step);
+  const analysis::BenchReport b = analysis::bench_dynamics(model, duration, file);
   fmt::print("model: {} ({} coordinates, {} constraint rows)\n", file,
              model.system->num_coordinates(), model.system->num_constraints());
-  State state = model.system->initial_state();
-  if (d.start_from_statics) {
-    const auto t0 = Clock::now();
-    const StaticsReport rep = solve_statics(*model.system, state, model.statics);
-    fmt::print("statics: {} Newton iterations in {} increment(s), {:.3f} s wall\n", rep.iterations,
-               rep.increments, seconds_since(t0));
-  }
-  auto integrator = d.make_integrator();
-  Simulation sim(*model.system, io::model_channels(model), *integrator, d.simulation());
-  const auto t0 = Clock::now();
-  const SimulationReport rep = sim.run(state);
-  const double wall = seconds_since(t0);
-  const IntegratorStats& st = integrator->stats();
+  if (b.statics)
+    fmt::print("statics: {} Newton iterations in {} increment(s), {:.3f} s wall\n",
+               b.statics->iterations, b.statics->increments, b.statics_wall_s);
+  const double wall = b.wall_s;
+  const IntegratorStats& st = b.stats;
+  const SimulationReport& rep = b.run;
   const double other = wall - st.assembly_s - st.factorize_s - st.solve_s;
   fmt::print(
       "dynamics: {}, {:g} s simulated in {:.3f} s wall: {:.4g} s wall per simulated s, "
       "{:.4g} x real time\n",
-      integrator->name(), d.duration, wall, wall / d.duration, d.duration / wall);
+      b.integrator, b.duration, wall, wall / b.duration, b.duration / wall);
   fmt::print(
       "steps: {} accepted, {} rejected, smallest {:g} s; {:.3g} iterations per step (Newton; "
       "stages for rk4)\n",
