@@ -18,7 +18,7 @@ import pytest
 import seaflex
 
 SEAFLEX = os.environ.get("SEAFLEX_EXECUTABLE", "build/seaflex")
-SRC = os.environ.get("SEAFLEX_SOURCE_DIR", ".")
+SRC = os.path.abspath(os.environ.get("SEAFLEX_SOURCE_DIR", "."))
 
 
 def example(name):
@@ -188,3 +188,28 @@ def test_solver_errors_carry_the_message_and_the_rows_so_far(tmp_path):
     assert len(results) == 11 and results.time[-1] == 1.0
     for name in header:
         assert same_bits(results[name], columns[name]), name
+
+
+@pytest.mark.parametrize("path", sorted(os.listdir(os.path.join(SRC, "examples"))))
+def test_every_example_survives_to_dict_and_from_dict(path):
+    # the dict written back as YAML is the same model: the same dict, the same summary
+    # (all but its first line, which names the model)
+    if not path.endswith(".yaml"):
+        return
+    model = seaflex.Model.from_file(example(path))
+    d = model.to_dict()
+    again = seaflex.Model.from_dict(d, model.source_path)
+    assert again.to_dict() == d
+    assert again.check().split("\n", 1)[1] == model.check().split("\n", 1)[1]
+
+
+def test_relative_file_references_resolve_against_source_path(tmp_path, monkeypatch):
+    # hemisphere_in_waves reads ../tests/data/wamit/sphere: after set() the edited model
+    # still finds it, from any working directory; a dict without source_path does not
+    monkeypatch.chdir(tmp_path)
+    model = seaflex.Model.from_file(example("hemisphere_in_waves.yaml"))
+    model.set("environment.waves.height", 0.5)
+    assert model.name == os.path.abspath(example("hemisphere_in_waves.yaml")) + " (edited)"
+    assert len(model.run(duration=0.5)) > 1
+    with pytest.raises(seaflex.InputError, match="cannot read the WAMIT file"):
+        seaflex.Model.from_dict(model.to_dict())
