@@ -21,7 +21,19 @@ except ImportError as _error:  # a build without the extension (sanitizers): bat
     _core_error = _error
 
 __all__ = ["Model", "Results", "BeamResults", "Error", "InputError", "ModelError",
-           "SolverError", "OutputError", "Interrupted"]
+           "SolverError", "OutputError", "Interrupted", "set_threads", "threads"]
+
+
+def set_threads(n):
+    """Threads of the element loops (the command line's --threads; default OMP_NUM_THREADS,
+    else 1): 1 to the machine's hardware threads. Results are identical for any count.
+    ValueError while an analysis runs in another thread."""
+    _need_core().set_threads(int(n))
+
+
+def threads():
+    """The threads of the element loops."""
+    return _need_core().threads()
 
 
 class Error(Exception):

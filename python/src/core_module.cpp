@@ -8,16 +8,19 @@
 // Runs release the GIL; the progress hook takes it back at every output row, calls the
 // Python callback and checks for signals (KeyboardInterrupt), and stops the run after its
 // current step (core/interrupt.hpp) when either raised.
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <yaml-cpp/yaml.h>
 
+#include <atomic>
 #include <csignal>
 #include <cstdlib>
 #include <memory>
 #include <optional>
 #include <regex>
+#include <thread>
 
 #include "seaflex/analysis/dynamics_analysis.hpp"
 #include "seaflex/analysis/memory_recorder.hpp"
@@ -28,6 +31,7 @@
 #include "seaflex/core/input_file.hpp"
 #include "seaflex/core/interrupt.hpp"
 #include "seaflex/core/output_file.hpp"
+#include "seaflex/core/parallel.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/io/output_selection.hpp"
 #include "seaflex/io/yaml_reader.hpp"
@@ -39,6 +43,15 @@ namespace py = pybind11;
 using namespace seaflex;
 
 namespace {
+
+// analyses running now (in any Python thread): the thread count must not change under them
+std::atomic<int> g_running{0};
+struct Running {
+  Running() { ++g_running; }
+  ~Running() { --g_running; }
+  Running(const Running&) = delete;
+  Running& operator=(const Running&) = delete;
+};
 
 // a loaded model, shared by the results that refer to its beams
 struct CoreModel {
@@ -182,6 +195,7 @@ py::tuple statics(std::shared_ptr<CoreModel> core, std::optional<std::string> ou
   std::string kind, message;
   {
     py::gil_scoped_release release;
+    const Running running;
     try {
       analysis::AnalysisOutput output;
       if (output_dir) {
@@ -235,6 +249,7 @@ py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output
   std::optional<analysis::RunSummary> summary;
   {
     py::gil_scoped_release release;
+    const Running running;
     try {
       analysis::AnalysisOutput output;
       if (output_dir) {
@@ -269,6 +284,7 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
   State state;
   {
     py::gil_scoped_release release;
+    const Running running;
     try {
       analysis::AnalysisHooks hooks;
       hooks.statics_increment = [&](double factor, int, const StaticsReport&) {
@@ -418,6 +434,18 @@ PYBIND11_MODULE(_core, m) {
         py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
         return a;
       });
+  m.def("set_threads", [](int n) {
+    if (g_running > 0)
+      throw py::value_error("the thread count cannot change while an analysis runs");
+    const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (n < 1 || n > hw)
+      throw py::value_error(fmt::format(
+          "threads must be a whole number from 1 to {} (the hardware threads of this machine), "
+          "got {}",
+          hw, n));
+    set_threads(n);
+  });
+  m.def("threads", [] { return threads(); });
   m.def("load", &load, py::arg("text"), py::arg("name"));
   m.def("read_model_file", &read_model_file, py::arg("path"));
   m.def("yaml_to_python", &yaml_to_python, py::arg("text"), py::arg("name"));

@@ -7,6 +7,7 @@ import os
 import signal
 import subprocess
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -169,3 +170,39 @@ def test_statistics_equal_the_statistics_section(tmp_path):
             expected = float(lines[name][column])
             got = float(table.loc[name, column])
             assert got == expected or (np.isnan(got) and np.isnan(expected)), (name, column)
+
+
+def test_a_run_releases_the_gil():
+    # one output row at the end: a run that held the GIL would stop this thread's loop for
+    # its whole wall time; released, the loop goes on (gaps of a switch interval, 5 ms,
+    # while the run takes the GIL back; 0.1 s allows for a loaded machine)
+    model = seaflex.Model.from_file(PENDULUM)
+    model.set("dynamics.output_interval", 4.0)
+    stamps, done = [], threading.Event()
+
+    def tick():
+        while not done.is_set():
+            stamps.append(time.monotonic())
+
+    thread = threading.Thread(target=tick)
+    thread.start()
+    try:
+        start = time.monotonic()
+        results = model.run(duration=4.0)
+        wall = time.monotonic() - start
+    finally:
+        done.set()
+        thread.join()
+    assert len(results) == 2
+    inside = [t for t in stamps if start <= t <= start + wall]
+    gaps = np.diff([start] + inside + [start + wall])
+    assert wall > 0.2 and gaps.max() < min(0.1, wall / 2), (wall, gaps.max())
+
+
+def test_threads():
+    before = seaflex.threads()
+    with pytest.raises(ValueError, match="threads must be a whole number from 1 to"):
+        seaflex.set_threads(0)
+    seaflex.set_threads(1)
+    assert seaflex.threads() == 1
+    seaflex.set_threads(before)
