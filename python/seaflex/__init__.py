@@ -72,7 +72,7 @@ class Interrupted(KeyboardInterrupt):
 
 
 _ERRORS = {"input": InputError, "model": ModelError, "solver": SolverError,
-           "output": OutputError, "error": InputError}
+           "output": OutputError, "error": InputError, "usage": RuntimeError}
 
 
 def _need_core():
@@ -101,7 +101,8 @@ def _raise(kind, message, results=None, exception=None):
         raise stopped
     if kind:
         error = _ERRORS.get(kind, Error)(message)
-        error.results = results
+        if kind != "usage":
+            error.results = results
         raise error from None
 
 
@@ -186,8 +187,9 @@ class Model:
         return _need_core().yaml_to_python(self._text, self._name)
 
     def copy(self):
-        """An independent model with the same text."""
-        return Model(self._core, self._text, self._name, self.source_path)
+        """An independent model with the same text (read again: it can run in another
+        thread while this one runs)."""
+        return Model._load(self._text, self._name, self.source_path)
 
     def set(self, path, value, create=False):
         """Sets one value by its key path ("environment.current.speed"; list items by index,
@@ -254,7 +256,9 @@ class Model:
         also write the command line's result files there."""
         model = self
         if duration is not None and self._core.has_dynamics:
-            model = self.copy().set("dynamics.duration", float(duration))
+            d = self.to_dict()
+            d["dynamics"]["duration"] = float(duration)
+            model = Model.from_dict(d, self.source_path)
         out = None if output_dir is None else os.fspath(output_dir)
         statics, recorded, report, kind, message, exception = _need_core().run(
             model._core, out, progress)

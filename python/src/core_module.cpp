@@ -46,16 +46,31 @@ namespace {
 
 // analyses running now (in any Python thread): the thread count must not change under them
 std::atomic<int> g_running{0};
-struct Running {
-  Running() { ++g_running; }
-  ~Running() { --g_running; }
-  Running(const Running&) = delete;
-  Running& operator=(const Running&) = delete;
-};
-
-// a loaded model, shared by the results that refer to its beams
+// a loaded model, shared by the results that refer to its beams; busy while an analysis
+// runs on it (its system's workspaces serve one analysis at a time)
 struct CoreModel {
   io::Model model;
+  std::atomic<bool> busy{false};
+};
+
+// an analysis running on a model (with the GIL released)
+class Running {
+ public:
+  explicit Running(CoreModel& core) : core_(core) {
+    if (core_.busy.exchange(true))
+      throw std::logic_error(
+          "this model is running an analysis in another thread; run a copy (model.copy())");
+    ++g_running;
+  }
+  ~Running() {
+    --g_running;
+    core_.busy = false;
+  }
+  Running(const Running&) = delete;
+  Running& operator=(const Running&) = delete;
+
+ private:
+  CoreModel& core_;
 };
 
 using Recorded = analysis::MemoryRecorder;
@@ -75,6 +90,8 @@ std::pair<std::string, std::string> classify() {
     return {"output", e.what()};
   } catch (const Interrupted& e) {  // 128 + signal
     return {"interrupted", e.what()};
+  } catch (const std::logic_error& e) {  // a misuse of the Python API
+    return {"usage", e.what()};
   } catch (const std::exception& e) {  // 2
     return {"error", e.what()};
   }
@@ -136,7 +153,8 @@ std::vector<post::BeamResults> output_beam_results(const io::Model& model) {
 
 py::tuple load(const std::string& text, const std::string& name) {
   try {
-    auto core = std::make_shared<CoreModel>(CoreModel{io::load_model_text(text, name)});
+    auto core = std::make_shared<CoreModel>();
+    core->model = io::load_model_text(text, name);
     return py::make_tuple(core, "", "");
   } catch (...) {
     const auto [kind, message] = classify();
@@ -195,8 +213,8 @@ py::tuple statics(std::shared_ptr<CoreModel> core, std::optional<std::string> ou
   std::string kind, message;
   {
     py::gil_scoped_release release;
-    const Running running;
     try {
+      const Running running(*core);
       analysis::AnalysisOutput output;
       if (output_dir) {
         output.dir = *output_dir;
@@ -249,8 +267,8 @@ py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output
   std::optional<analysis::RunSummary> summary;
   {
     py::gil_scoped_release release;
-    const Running running;
     try {
+      const Running running(*core);
       analysis::AnalysisOutput output;
       if (output_dir) {
         output.dir = *output_dir;
@@ -284,8 +302,8 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
   State state;
   {
     py::gil_scoped_release release;
-    const Running running;
     try {
+      const Running running(*core);
       analysis::AnalysisHooks hooks;
       hooks.statics_increment = [&](double factor, int, const StaticsReport&) {
         hook(factor, 1.0);

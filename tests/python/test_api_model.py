@@ -206,3 +206,25 @@ def test_threads():
     seaflex.set_threads(1)
     assert seaflex.threads() == 1
     seaflex.set_threads(before)
+
+
+def test_one_model_runs_one_analysis_at_a_time():
+    # its system's workspaces serve one analysis: a second thread is refused, a copy runs
+    model = seaflex.Model.from_file(PENDULUM)
+    started, outcome = threading.Event(), {}
+
+    def first():
+        outcome["rows"] = len(model.run(progress=lambda t, T: started.set()))
+
+    thread = threading.Thread(target=first)
+    thread.start()
+    try:
+        assert started.wait(30)
+        with pytest.raises(RuntimeError) as e:
+            model.statics()
+        assert str(e.value) == ("this model is running an analysis in another thread; run a "
+                                "copy (model.copy())")
+        assert len(model.copy().run(duration=0.1)) == 11
+    finally:
+        thread.join()
+    assert outcome["rows"] == 1001
