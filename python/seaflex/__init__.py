@@ -278,6 +278,9 @@ class Model:
         _raise(kind, message, None, exception)
         return result
 
+    def __reduce__(self):  # pickling (multiprocessing, Dask): the text, read again
+        return (Model._load, (self._text, self._name, self.source_path))
+
     def __repr__(self):
         return f"<seaflex.Model {self._name}>"
 

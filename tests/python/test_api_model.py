@@ -1,7 +1,7 @@
 """The Python API (issue 20): changing a model by key path and re-running, pandas tables,
 natural modes, progress callbacks, and runs stopped by Ctrl-C with the results so far.
 Every comparison with the command line is bit for bit (its CSV files print 17 significant
-digits, which round-trip doubles). Run by ctest (python_api) like test_api.py."""
+digits, which round-trip doubles). Run by ctest (python_api_model) like test_api.py."""
 import csv
 import os
 import signal
@@ -131,8 +131,8 @@ def test_an_exception_in_progress_stops_the_run_with_the_results_so_far():
 def test_ctrl_c_stops_the_run_cleanly_with_the_results_so_far():
     # a SIGINT while the run is in C++ (GIL released): Python's handler runs at the next
     # output row (PyErr_CheckSignals), the run stops after that step
-    full = seaflex.Model.from_file(PENDULUM).run()
-    model = seaflex.Model.from_file(PENDULUM)
+    model = seaflex.Model.from_file(PENDULUM).set("dynamics.duration", 4.0)  # 0.5 s wall
+    full = model.run()
     timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     try:
@@ -210,7 +210,7 @@ def test_threads():
 
 def test_one_model_runs_one_analysis_at_a_time():
     # its system's workspaces serve one analysis: a second thread is refused, a copy runs
-    model = seaflex.Model.from_file(PENDULUM)
+    model = seaflex.Model.from_file(PENDULUM).set("dynamics.duration", 4.0)
     started, outcome = threading.Event(), {}
 
     def first():
@@ -227,4 +227,4 @@ def test_one_model_runs_one_analysis_at_a_time():
         assert len(model.copy().run(duration=0.1)) == 11
     finally:
         thread.join()
-    assert outcome["rows"] == 1001
+    assert outcome["rows"] == 401
