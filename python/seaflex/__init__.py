@@ -236,24 +236,29 @@ class Model:
         return self._core.summary() + "model OK\n"
 
     # --- analyses -----------------------------------------------------------------------
-    def statics(self, output_dir=None, progress=None):
+    def statics(self, output_dir=None, progress=None, beams=True):
         """Static equilibrium: Results with one row (the statics.csv of `seaflex statics`,
         also written to output_dir when given). progress(load_factor, 1.0) after each load
-        increment. SolverError carries the last converged increment as its results."""
+        increment. SolverError carries the last converged increment as its results.
+        beams=False keeps the channels only (see run())."""
         out = None if output_dir is None else os.fspath(output_dir)
-        recorded, kind, message, exception = _need_core().statics(self._core, out, progress)
+        recorded, kind, message, exception = _need_core().statics(self._core, out, progress,
+                                                                  bool(beams))
         results = Results(recorded, self._core)
         _raise(kind, message, results, exception)
         return results
 
-    def run(self, duration=None, progress=None, output_dir=None):
+    def run(self, duration=None, progress=None, output_dir=None, beams=True):
         """A dynamic run as `seaflex run` performs it (statics first when the model starts
         from them): Results of every output row. duration (s) overrides
         dynamics.duration (validated as in the file). progress(t, duration) is called at
         every output row; the GIL is released in between. Ctrl-C stops the run after its
         current step and raises seaflex.Interrupted (a KeyboardInterrupt) whose results
         hold the rows so far; a solver failure raises SolverError with them. output_dir:
-        also write the command line's result files there."""
+        also write the command line's result files there. beams: keep the beam results
+        along the length of every row in memory (rows x stations x 16 doubles per beam) when
+        the output section writes them (beam_results: all, the default); False: the
+        channels only."""
         model = self
         if duration is not None and self._core.has_dynamics:
             d = self.to_dict()
@@ -261,7 +266,7 @@ class Model:
             model = Model.from_dict(d, self.source_path)
         out = None if output_dir is None else os.fspath(output_dir)
         statics, recorded, report, kind, message, exception = _need_core().run(
-            model._core, out, progress)
+            model._core, out, progress, bool(beams))
         results = Results(recorded, model._core, report)
         if statics is not None:
             results.statics = Results(statics, model._core)

@@ -143,9 +143,11 @@ py::array view(const std::vector<double>& v, py::handle owner) {
   return a;
 }
 
-std::vector<post::BeamResults> output_beam_results(const io::Model& model) {
+// the beams whose results along the length are kept at every row: those the files hold
+// (output.beam_results: all), unless the caller asked for the channels only
+std::vector<post::BeamResults> output_beam_results(const io::Model& model, bool keep) {
   std::vector<post::BeamResults> list;
-  if (model.output.beam_results != io::OutputSettings::BeamResults::kAll) return list;
+  if (!keep || model.output.beam_results != io::OutputSettings::BeamResults::kAll) return list;
   for (const AncfBeam* b : io::output_beams(model))
     list.emplace_back(*b, io::pipe_pressure(model, *b), model.output.beam_gauss_points);
   return list;
@@ -206,9 +208,9 @@ struct PythonHook {
 
 // statics (and their files in output_dir, when given): (recorded, kind, message, exception)
 py::tuple statics(std::shared_ptr<CoreModel> core, std::optional<std::string> output_dir,
-                  py::object progress) {
+                  py::object progress, bool beams) {
   const io::Model& model = core->model;
-  auto recorded = std::make_shared<Recorded>(output_beam_results(model), 1);
+  auto recorded = std::make_shared<Recorded>(output_beam_results(model, beams), 1);
   PythonHook hook{std::move(progress), {}};
   std::string kind, message;
   {
@@ -250,7 +252,7 @@ py::dict report_dict(const SimulationReport& r) {
 // a run (and its files in output_dir, when given): (statics recorded or None, recorded,
 // report or None, kind, message, exception)
 py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output_dir,
-              py::object progress) {
+              py::object progress, bool beams) {
   const io::Model& model = core->model;
   long rows = 0;
   if (model.dynamics) {
@@ -260,8 +262,8 @@ py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output
   }
   std::shared_ptr<Recorded> statics_recorded;
   if (model.dynamics && model.dynamics->start_from_statics)
-    statics_recorded = std::make_shared<Recorded>(output_beam_results(model), 1);
-  auto recorded = std::make_shared<Recorded>(output_beam_results(model), rows);
+    statics_recorded = std::make_shared<Recorded>(output_beam_results(model, beams), 1);
+  auto recorded = std::make_shared<Recorded>(output_beam_results(model, beams), rows);
   PythonHook hook{std::move(progress), {}};
   std::string kind, message;
   std::optional<analysis::RunSummary> summary;
@@ -470,8 +472,10 @@ PYBIND11_MODULE(_core, m) {
   m.def("suggestion", [](const std::string& name, const std::vector<std::string>& candidates) {
     return io::suggestion(name, candidates);
   });
-  m.def("statics", &statics, py::arg("model"), py::arg("output_dir"), py::arg("progress"));
-  m.def("run", &run, py::arg("model"), py::arg("output_dir"), py::arg("progress"));
+  m.def("statics", &statics, py::arg("model"), py::arg("output_dir"), py::arg("progress"),
+        py::arg("beams"));
+  m.def("run", &run, py::arg("model"), py::arg("output_dir"), py::arg("progress"),
+        py::arg("beams"));
   m.def("record_statistics", &record_statistics, py::arg("time"), py::arg("values"),
         py::arg("from_row"));
   m.def("modes", &modes, py::arg("model"), py::arg("count"), py::arg("about_initial"));

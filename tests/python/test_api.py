@@ -96,6 +96,12 @@ def test_the_riser_has_beam_results_and_the_channels_are_views(tmp_path):
     assert not x.flags.owndata and not x.flags.writeable
     assert x.base is not None
     assert not tension.flags.owndata
+    # beams=False: the channels only, the same numbers
+    channels_only = model.run(duration=2.0, beams=False)
+    assert channels_only.beams == []
+    with pytest.raises(KeyError, match="no beam results for 'riser'"):
+        channels_only.beam("riser")
+    assert same_bits(channels_only["riser.n10.x"], results["riser.n10.x"])
 
 
 def test_output_dir_writes_the_command_lines_files_byte_for_byte(tmp_path):
