@@ -55,25 +55,32 @@ io::Model load_model(const std::string& file, const OutputOptions& options = {})
   return model;
 }
 
-// statics with a report on stdout; on failure the last converged state goes to
-// statics_partial.csv (.h5) before the error propagates
-State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
-  analysis::AnalysisOutput output;
-  output.dir = dir;
+// the report of statics: increments on stderr, the convergence and design summary on
+// stdout, where a failed statics kept its last increment
+analysis::AnalysisHooks statics_hooks(const io::Model& model, bool quiet) {
   analysis::AnalysisHooks hooks;
-  hooks.statics_increment = [&](double factor, int iterations, const StaticsReport& so_far) {
+  hooks.statics_increment = [&model, quiet](double factor, int iterations,
+                                            const StaticsReport& so_far) {
     if (!quiet && model.statics.load_steps > 1)
       fmt::print(stderr, "[seaflex] statics: load factor {:.4g} converged in {} iterations: {}\n",
                  factor, iterations, describe_convergence(so_far));
   };
-  hooks.statics_done = [&](const StaticsReport& rep, const std::string& design_summary) {
+  hooks.statics_done = [quiet](const StaticsReport& rep, const std::string& design_summary) {
     if (quiet) return;
     fmt::print("statics converged: {} load increment(s), {} Newton iterations; {}\n",
                rep.increments, rep.iterations, describe_convergence(rep));
     fmt::print("{}", design_summary);
   };
   hooks.note = [](const std::string& note) { std::fprintf(stderr, "seaflex: %s\n", note.c_str()); };
-  return analysis::run_statics(model, output, hooks);
+  return hooks;
+}
+
+// statics with a report on stdout; on failure the last converged state goes to
+// statics_partial.csv (.h5) before the error propagates
+State run_statics(const io::Model& model, const fs::path& dir, bool quiet) {
+  analysis::AnalysisOutput output;
+  output.dir = dir;
+  return analysis::run_statics(model, output, statics_hooks(model, quiet));
 }
 
 int cmd_check(const std::string& file) {
@@ -152,18 +159,10 @@ int cmd_run(const std::string& file, const fs::path& dir, bool quiet, const Outp
   // the time loop
   std::optional<cli::ProgressLine> progress;
   cli::ProgressLine* line = nullptr;
-  analysis::AnalysisHooks hooks = run_hooks(line);
-  hooks.statics_increment = [&](double factor, int iterations, const StaticsReport& so_far) {
-    if (!quiet && model.statics.load_steps > 1)
-      fmt::print(stderr, "[seaflex] statics: load factor {:.4g} converged in {} iterations: {}\n",
-                 factor, iterations, describe_convergence(so_far));
-  };
-  hooks.statics_done = [&](const StaticsReport& rep, const std::string& design_summary) {
-    if (quiet) return;
-    fmt::print("statics converged: {} load increment(s), {} Newton iterations; {}\n",
-               rep.increments, rep.iterations, describe_convergence(rep));
-    fmt::print("{}", design_summary);
-  };
+  analysis::AnalysisHooks hooks = statics_hooks(model, quiet);
+  const analysis::AnalysisHooks loop = run_hooks(line);
+  hooks.progress = loop.progress;
+  hooks.note = loop.note;
   const analysis::RunSummary summary =
       analysis::run_dynamics(model, output, hooks, [&](analysis::DynamicsRun& run) {
         line = &progress.emplace(quiet);
