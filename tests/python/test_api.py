@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import seaflex
+from seaflex import _yaml
 
 SEAFLEX = os.environ.get("SEAFLEX_EXECUTABLE", "build/seaflex")
 SRC = os.path.abspath(os.environ.get("SEAFLEX_SOURCE_DIR", "."))
@@ -164,7 +165,7 @@ def test_unreadable_file_and_dict_errors(tmp_path):
     d["dynamics"]["time_step"] = -1.0
     with pytest.raises(seaflex.InputError) as e:
         seaflex.Model.from_dict(d)
-    line = seaflex._yaml.dump(d).splitlines().index("  time_step: -1.0") + 1
+    line = _yaml.dump(d).splitlines().index("  time_step: -1.0") + 1
     assert str(e.value) == f"<dict>:{line}:14: dynamics.time_step: must be greater than 0 s, got -1.0"
 
 
@@ -231,3 +232,39 @@ def test_a_model_pickles_as_its_text():
     assert a.channels == b.channels
     for name in ["time"] + a.channels:
         assert same_bits(a[name], b[name]), name
+
+
+def test_yaml_written_from_a_dict_reads_back_the_same():
+    # _yaml.dump and the loader's parser (to_dict's reader): strings that look like
+    # other things stay strings, floats keep every bit
+    import numpy
+    value = {
+        "strings": ["true", "null", "1.5", "", " padded ", "a: b", "x #y", "[1]", "yes", "~",
+                    "-dash", "ünïcode", "line\nbreak", "quote\"s", "riser.n10.x", "a - b"],
+        "numbers": [0.1, 1e-300, 1.7976931348623157e308, -0.0, 3, -7, 2 ** 70, float("inf"),
+                    -float("inf"), True, False, None],
+        "nested": {"empty_map": {}, "empty_list": [], "table": [[1.0, 2.0], [3.0, 0.5]],
+                   "items": [{"a": 1, "b": [1, 2]}, {"c": {"d": "e"}}, [{"f": 1}]]},
+        "numpy": numpy.array([[0.1, 0.2], [0.3, 0.4]]),
+        "key with spaces": 1, "true": "key", "1": "numeric key",
+    }
+    text = _yaml.dump(value)
+    back = seaflex._core.yaml_to_python(text, "<test>")
+    expected = dict(value, numpy=[[0.1, 0.2], [0.3, 0.4]])
+    assert back == expected
+    assert str(back["numbers"][3]) == "-0.0"
+    nan = seaflex._core.yaml_to_python(_yaml.dump({"x": float("nan")}), "<test>")
+    assert nan["x"] != nan["x"]
+    with pytest.raises(TypeError, match="a.b: cannot write a set"):
+        _yaml.dump({"a": {"b": {1, 2}}})
+
+
+def test_an_output_dir_that_is_a_file_is_an_input_error(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    r = cli("run", example("double_pendulum.yaml"), "-o", str(blocker))
+    assert r.returncode == 2
+    with pytest.raises(seaflex.InputError) as e:
+        seaflex.Model.from_file(example("double_pendulum.yaml")).run(output_dir=blocker)
+    assert str(e.value) == r.stderr.rstrip("\n")
+    assert str(e.value) == f"{blocker}: cannot create the output directory: Not a directory"

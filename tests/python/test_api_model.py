@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import seaflex
+from seaflex import _yaml
 
 SEAFLEX = os.environ.get("SEAFLEX_EXECUTABLE", "build/seaflex")
 SRC = os.environ.get("SEAFLEX_SOURCE_DIR", ".")
@@ -72,7 +73,7 @@ def test_an_invalid_value_leaves_the_model_unchanged():
     text = model.yaml
     with pytest.raises(seaflex.InputError) as e:
         model.set("environment.current.speed", -1.5)
-    line = seaflex._yaml.dump(
+    line = _yaml.dump(
         {**model.to_dict(), "environment": {**model.to_dict()["environment"],
                                             "current": {"speed": -1.5, "direction": 0}}}
     ).splitlines().index("  current:") + 2
