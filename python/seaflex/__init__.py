@@ -193,7 +193,8 @@ class Model:
 
     def set(self, path, value, create=False):
         """Sets one value by its key path ("environment.current.speed"; list items by index,
-        "bodies.riser.sections.0.length") and reloads the model; returns self. A key that
+        "connections.0.stiffness"; a list of keys for names holding dots) and reloads the
+        model; returns self. A key that
         does not exist raises InputError with a did-you-mean (create=True adds a missing
         last key). An invalid value raises InputError and leaves the model unchanged."""
         d = self.to_dict()
@@ -252,7 +253,8 @@ class Model:
         """A dynamic run as `seaflex run` performs it (statics first when the model starts
         from them): Results of every output row. duration (s) overrides
         dynamics.duration (validated as in the file). progress(t, duration) is called at
-        every output row; the GIL is released in between. Ctrl-C stops the run after its
+        every output row (and with t = 0 after each statics load increment); the GIL is
+        released in between. Ctrl-C stops the run after its
         current step and raises seaflex.Interrupted (a KeyboardInterrupt) whose results
         hold the rows so far; a solver failure raises SolverError with them. output_dir:
         also write the command line's result files there. beams: keep the beam results
