@@ -132,8 +132,13 @@ def test_an_exception_in_progress_stops_the_run_with_the_results_so_far():
 def test_ctrl_c_stops_the_run_cleanly_with_the_results_so_far():
     # a SIGINT while the run is in C++ (GIL released): Python's handler runs at the next
     # output row (PyErr_CheckSignals), the run stops after that step
-    model = seaflex.Model.from_file(PENDULUM).set("dynamics.duration", 4.0)  # 0.5 s wall
-    full = model.run()
+    # The run to interrupt is 400 s long (about 50 s of wall time), so that the SIGINT
+    # 0.3 s after its start always comes while it runs, on a loaded machine or a fast one
+    # (a 4 s run once finished before the timer under CI); its rows so far are compared
+    # with a 20 s run (about 2.5 s), which they cannot outgrow in 0.3 s.
+    model = seaflex.Model.from_file(PENDULUM)
+    full = model.run(duration=20.0)
+    model.set("dynamics.duration", 400.0)
     timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     try:
