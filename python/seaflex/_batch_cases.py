@@ -125,7 +125,8 @@ class Marks:
         return f"{self.source}:{mark.line + 1}:{mark.column + 1}"
 
     def error(self, keys, key_text, message):
-        return BatchError(f"{self.where(*keys)}: {key_text}: {message}")
+        key = f" {key_text}:" if key_text else ""
+        return BatchError(f"{self.where(*keys)}:{key} {message}")
 
 
 def read_yaml(path, what):
@@ -188,15 +189,17 @@ def _split(path):
 
 def _resolve(model, path):
     """Walks a key path: (True, loader_key) when it exists, else (False, details) where details
-    = (loader key of the part that exists, missing component, keys there, kind)."""
+    = (loader key of the part that exists, missing component, keys there, kind, is_last)."""
     node, loader_key = model, ""
-    for comp in _split(path):
+    comps = _split(path)
+    for i, comp in enumerate(comps):
+        last = i == len(comps) - 1
         if isinstance(node, dict):
             if comp in node:
                 node = node[comp]
                 loader_key = f"{loader_key}.{comp}" if loader_key else comp
                 continue
-            return False, (loader_key, comp, list(node.keys()), "key")
+            return False, (loader_key, comp, list(node.keys()), "key", last)
         if isinstance(node, list):
             names = [e.get("name") if isinstance(e, dict) else None for e in node]
             if comp.isdigit() and int(comp) < len(node):
@@ -205,11 +208,12 @@ def _resolve(model, path):
                 index = names.index(comp)
             else:
                 shown = [n for n in names if n is not None] or list(range(len(node)))
-                return False, (loader_key, comp, shown, "element")
+                return False, (loader_key, comp, shown, "element", last)
             node = node[index]
             loader_key = f"{loader_key}[{index}]"
             continue
-        return False, (loader_key, comp, [], f"value {value_text(node)}")
+        shown = f"'{node}'" if isinstance(node, str) else value_text(node)
+        return False, (loader_key, comp, [], f"the value {shown}", last)
     return True, loader_key
 
 
@@ -285,35 +289,42 @@ def _loader_verdict(base, base_dir, path, value, executable):
     return None
 
 
+def _label(keys):
+    """The key of a message: product.environment.waves.height, table[2].bodies.riser.density."""
+    text = ""
+    for k in keys:
+        text += f"[{k}]" if isinstance(k, int) else (f".{k}" if text else str(k))
+    return text
+
+
 def _check_path(base, base_dir, path, value, marks, keys, model_name, executable):
-    """Refuses a key path that names no key of the model (did you mean)."""
+    """Refuses a key path that names no key of the model (did you mean). A last key that the
+    base model leaves out is asked of the model loader (seaflex check): the format may know
+    it (a default the model does not write)."""
+    label = _label(keys)
     if not isinstance(path, str) or not path or any(not c for c in _split(path)):
-        raise marks.error(keys, ".".join(map(str, keys)),
-                          f"a key path such as environment.waves.height, got '{path}'")
+        raise marks.error(keys, label,
+                          f"expected a key path such as environment.waves.height, got '{path}'")
     found, info = _resolve(base, path)
     if found:
         return
-    exists_key, comp, choices, kind = info
-    label = ".".join(str(k) for k in keys)
-    where = f"'{exists_key}'" if exists_key else "the top level"
+    parent, comp, choices, kind, last = info
+    inside = f"in {parent}" if parent else "at the top level"
     if kind == "element":
         raise marks.error(keys, label,
-                          f"{exists_key} of the model {model_name} has no element '{comp}' "
-                          f"(an index from 0 or a name){did_you_mean(comp, choices)}")
-    if kind.startswith("value"):
-        raise marks.error(keys, label,
-                          f"'{exists_key}' of the model {model_name} is a {kind}, not a "
+                          f"no element '{comp}' {inside} of the model {model_name} (an index "
+                          f"from 0 or a name){did_you_mean(comp, choices)}")
+    if kind != "key":
+        raise marks.error(keys, label, f"{parent} of the model {model_name} is {kind}, not a "
                           f"section with the key '{comp}'")
-    verdict = _loader_verdict(base, base_dir, path, value, executable)
+    verdict = _loader_verdict(base, base_dir, path, value, executable) if last else "unknown"
     if verdict is None:
         return  # a key the model leaves out but the format knows
-    if verdict == "unavailable":
-        raise marks.error(keys, label, f"unknown key '{comp}' at {where} of the model "
-                          f"{model_name}{did_you_mean(comp, choices)}")
-    key, rest = verdict
-    raise marks.error(keys, label,
-                      f"unknown key '{key.split('.')[-1].split(']')[-1]}' of the model "
-                      f"{model_name} ({key}){rest}")
+    rest = did_you_mean(comp, choices)
+    if isinstance(verdict, tuple):
+        _, rest = verdict
+    raise marks.error(keys, label, f"unknown key '{comp}' {inside} of the model {model_name}"
+                      f"{rest}")
 
 
 def _number(data, key, marks, keys, low, high, unit):
@@ -330,7 +341,7 @@ def _mapping(value, marks, keys, what):
     if value is None:
         return {}
     if not isinstance(value, dict):
-        raise marks.error(keys, ".".join(str(k) for k in keys),
+        raise marks.error(keys, _label(keys),
                           f"expected {what}, got {value_text(value)}")
     return value
 

@@ -31,7 +31,7 @@ __all__ = ["run", "main", "BatchError"]
 
 SUMMARY = "summary.csv"
 # connecting to a scheduler gives up after this long (Dask's own default is 30 s)
-CONNECT_TIMEOUT_S = 10
+CONNECT_TIMEOUT_S = 5
 MAX_WORKERS = 1024
 
 
@@ -108,6 +108,37 @@ class _Progress:
         self.stream.flush()
 
 
+START_HINT = ("start one with dask-scheduler and dask-worker, or leave out --scheduler for a "
+              "local cluster")
+
+
+def _reachable(scheduler):
+    """Refuses a scheduler address that is malformed, or (TCP) where nothing answers within
+    CONNECT_TIMEOUT_S: a refused connection is reported at once, not after Dask's
+    retries."""
+    import socket
+    from distributed.comm.addressing import parse_address, parse_host_port
+    from distributed.comm.registry import get_backend
+    try:
+        scheme, location = parse_address(scheduler)
+        get_backend(scheme)
+        if scheme not in ("tcp", "tls"):
+            return
+        host, port = parse_host_port(location)
+        if not 1 <= int(port) <= 65535:
+            raise ValueError(f"port {port} outside 1 to 65535")
+    except (ValueError, TypeError) as e:
+        raise BatchError(f"--scheduler: {scheduler}: not a scheduler address ({e}); expected "
+                         "tcp://HOST:PORT") from None
+    try:
+        socket.create_connection((host, port), timeout=CONNECT_TIMEOUT_S).close()
+    except OSError as e:
+        reason = e.strerror or (f"no answer within {CONNECT_TIMEOUT_S} s"
+                                if isinstance(e, TimeoutError) else str(e))
+        raise BatchError(f"cannot reach the Dask scheduler at {scheduler}: {reason}; "
+                         f"{START_HINT}") from None
+
+
 def _connect(client, workers, scheduler):
     """(client, things to close): the given client, a client of the scheduler, or a new
     LocalCluster of `workers` processes with one thread each."""
@@ -121,18 +152,15 @@ def _connect(client, workers, scheduler):
     import dask
     from distributed import Client, LocalCluster
     if scheduler is not None:
+        _reachable(scheduler)
         try:
             with dask.config.set({"distributed.comm.timeouts.connect":
                                   f"{CONNECT_TIMEOUT_S}s"}):
                 c = Client(scheduler, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
         except (OSError, TimeoutError) as e:
             raise BatchError(f"cannot reach the Dask scheduler at {scheduler} within "
-                             f"{CONNECT_TIMEOUT_S} s ({type(e).__name__}: {e}); start one with "
-                             "dask-scheduler and dask-worker, or leave out --scheduler for a "
-                             "local cluster") from None
-        except ValueError as e:
-            raise BatchError(f"--scheduler: {scheduler}: not a scheduler address ({e}); "
-                             "expected tcp://HOST:PORT") from None
+                             f"{CONNECT_TIMEOUT_S} s ({type(e).__name__}: {e}); {START_HINT}") \
+                from None
         return c, [c]
     n = workers if workers is not None else (os.cpu_count() or 1)
     if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_WORKERS:
@@ -272,7 +300,8 @@ def main(argv=None):
         return 130
     failed = frame[frame["status"] != "ok"]
     for _, row in failed.iterrows():
-        print(f"seaflex batch: case {row['case']}: {row['status']}: {row['message']}",
+        message = str(row["message"]).replace("\n", "\n  ")
+        print(f"seaflex batch: case {row['case']}: {row['status']}: {message}",
               file=sys.stderr)
     if not args.quiet:
         reused = int(frame["reused"].fillna(False).astype(bool).sum())
