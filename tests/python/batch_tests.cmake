@@ -4,7 +4,7 @@ set(SEAFLEX_BATCH_TEST_ENV
   "PYTHONPATH=${PROJECT_BINARY_DIR}/python:${PROJECT_SOURCE_DIR}/python"
   "SEAFLEX_EXECUTABLE=$<TARGET_FILE:seaflex>" "PYTHONDONTWRITEBYTECODE=1")
 foreach(name test_batch test_batch_failures test_batch_input test_batch_cluster
-             test_batch_summary)
+             test_batch_summary test_batch_cases)
   add_test(NAME python_${name} COMMAND /usr/bin/python3 -m pytest -q -p no:cacheprovider
            ${CMAKE_CURRENT_LIST_DIR}/${name}.py)
   set_tests_properties(python_${name} PROPERTIES ENVIRONMENT "${SEAFLEX_BATCH_TEST_ENV}"

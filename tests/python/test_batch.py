@@ -9,7 +9,7 @@ import time
 
 import pytest
 
-from batch_support import (EXE, LOWER, PENDULUM, UPPER, alive, cases_yaml, children,
+from batch_support import (EXE, LOWER, UPPER, alive, cases_yaml, children,
                            serial_runs)
 from seaflex import batch
 

@@ -1,0 +1,53 @@
+"""The cases of a batch (issue 20): a table combined with a product and the case names it
+gives, a base model given as an object with to_dict() and source_path (seaflex.Model) whose
+file references are made absolute, so that the case's model runs from its own folder."""
+
+import re
+
+from batch_support import EXE, REPO
+from seaflex import batch
+from seaflex._batch_cases import Marks, parse
+
+RAOS = REPO / "examples" / "drilling_rig_raos.yaml"
+
+
+class ModelLike:
+    """What seaflex.Model offers the batch: to_dict() and source_path."""
+    source_path = str(RAOS)
+
+    def to_dict(self):
+        return batch._base(str(RAOS))[0]
+
+
+def test_a_table_times_a_product():
+    cases = {"table": [{"name": "calm", "environment.waves.hs": 1.0},
+                       {"name": "rough", "environment.waves.hs": 5.0}],
+             "product": {"environment.waves.tp": [8.0, 12.5]}}
+    b = parse(cases, Marks("cases"), *batch._base(ModelLike()), EXE)
+    assert [c.name for c in b.cases] == ["calm_tp=8", "calm_tp=12.5", "rough_tp=8",
+                                         "rough_tp=12.5"]
+    assert b.cases[3].values == {"environment.waves.hs": 5.0, "environment.waves.tp": 12.5}
+    assert b.paths == ["environment.waves.hs", "environment.waves.tp"]
+    # the RAO table, relative to the base model in its file, is absolute in the case's model
+    assert re.findall(r"file: (.*)", b.cases[0].text) == [str(REPO / "examples" /
+                                                           "drilling_rig_raos.csv")]
+    # the same case twice has the same digest; another value another one
+    again = parse(cases, Marks("cases"), *batch._base(ModelLike()), EXE)
+    assert [c.digest for c in again.cases] == [c.digest for c in b.cases]
+    assert len({c.digest for c in b.cases}) == 4
+
+
+def test_names_fall_back_to_numbers():
+    b = parse({"product": {"bodies.platform.position": [[0, 0, -5], [10, 0, -5]]}},
+              Marks("cases"), *batch._base(str(REPO / "examples" / "drilling_rig.yaml")), EXE)
+    assert [c.name for c in b.cases] == ["case1", "case2"]  # a list makes no folder name
+    assert "position: [10, 0, -5]" in b.cases[1].text
+
+
+def test_the_case_model_runs_from_its_own_folder(tmp_path):
+    frame = batch.run(ModelLike(), {"set": {"dynamics.duration": 2.0},
+                                    "table": [{"name": "calm", "environment.waves.hs": 1.0}],
+                                    "summary": {"channels": ["platform.z"]}},
+                      output=tmp_path, workers=1, progress=False, executable=EXE)
+    assert list(frame["status"]) == ["ok"], frame["message"][0]
+    assert frame["platform.z.min"][0] < frame["platform.z.max"][0]
