@@ -9,7 +9,8 @@ The batch: examples/double_pendulum.yaml (RK4, 1 ms steps) with `--cases` upper-
 and `--duration` s of motion each: cases of equal cost. Each measurement starts a fresh
 cluster (its start-up is timed apart), runs the batch into a new folder (nothing skipped)
 and closes the cluster. "ideal" is the sum of the cases' own wall times (seaflex in its
-subprocess) divided by the workers.
+subprocess) divided by the workers. "plain" runs the same 16 case models with the command
+line from a pool of 1 or 2 threads (no Dask): what the machine gives two processes at once.
 """
 
 import argparse
@@ -19,6 +20,7 @@ import shutil
 import subprocess
 import tempfile
 import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from distributed import Client, LocalCluster
@@ -46,6 +48,18 @@ def measure(workers, cases, folder):
     return startup, wall, float(frame["wall_time"].sum())
 
 
+def plain(workers, models, exe, folder):
+    """Wall time of the case models run by `seaflex run` from `workers` threads."""
+    def one(i):
+        out = folder / f"plain_{i}"
+        subprocess.run([exe, "run", str(models[i]), "-o", str(out), "-q", "--format", "hdf5"],
+                       check=True)
+    t0 = time.monotonic()
+    with ThreadPoolExecutor(workers) as pool:
+        list(pool.map(one, range(len(models))))
+    return time.monotonic() - t0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cases", type=int, default=16)
@@ -68,16 +82,21 @@ def main():
         print(f"batch: {args.cases} cases of examples/double_pendulum.yaml, {args.duration:g} s "
               "of motion each (RK4, h = 1 ms)")
         print(f"{'workers':>7} {'run':>3} {'start-up (s)':>12} {'batch wall (s)':>14} "
-              f"{'cases/s':>8} {'sum of cases (s)':>16} {'ideal (s)':>9}")
+              f"{'cases/s':>8} {'sum of cases (s)':>16} {'ideal (s)':>9} {'plain (s)':>9}")
         walls = {}
         for run in range(args.repeat):
             for workers in (1, 2):
                 folder = Path(tmp) / f"out_{workers}_{run}"
                 startup, wall, busy = measure(workers, str(cases), folder)
                 walls.setdefault(workers, []).append(wall)
+                models = sorted(folder.glob("*/model.yaml"))
+                control = plain(workers, models, exe, Path(tmp))
                 print(f"{workers:>7} {run + 1:>3} {startup:>12.2f} {wall:>14.2f} "
-                      f"{args.cases / wall:>8.2f} {busy:>16.2f} {busy / workers:>9.2f}")
+                      f"{args.cases / wall:>8.2f} {busy:>16.2f} {busy / workers:>9.2f} "
+                      f"{control:>9.2f}")
                 shutil.rmtree(folder)
+                for old in Path(tmp).glob("plain_*"):
+                    shutil.rmtree(old)
         best1, best2 = min(walls[1]), min(walls[2])
         print(f"speed-up of 2 workers over 1 (best walls): {best1 / best2:.2f}")
 
