@@ -166,13 +166,13 @@ class Summary:
 class Case:
     name: str
     values: dict  # key path -> value
-    text: str = ""  # the case's model (YAML)
-    digest: str = ""  # sha256 of the command and the text
-    start: float = 0.0  # s: the summary's statistics leave out the rows before
+    digest: str = ""  # sha256 of what makes the case's model (Batch.digest)
 
 
 @dataclass
 class Batch:
+    """The cases of a batch. A case's model is made when it is submitted (model(), text()):
+    a batch of many cases does not hold all their models at once."""
     base: dict
     base_path: str  # the base model's file, or None
     cases: list
@@ -181,6 +181,44 @@ class Batch:
     command: str = "run"
     timeout: float = None
     source: str = "cases"
+    fixed: dict = field(default_factory=dict)  # `set`
+    base_digest: str = ""
+
+    @property
+    def base_dir(self):
+        return os.path.dirname(os.path.abspath(self.base_path)) if self.base_path else None
+
+    def model(self, case):
+        """The case's model: the base model, `set`, the case's values, absolute file names."""
+        model = copy.deepcopy(self.base)
+        for path, value in itertools.chain(self.fixed.items(), case.values.items()):
+            set_value(model, path, value)
+        if self.base_dir:
+            absolute_files(model, self.base_dir)
+        return model
+
+    def text(self, case, model=None):
+        """The case's model file: a comment naming the case and its values, then the model."""
+        header = f"# seaflex batch case {case.name}" + "".join(
+            f"\n#   {p} = {value_text(v)}" for p, v in case.values.items()) + "\n"
+        return header + dump_model(self.model(case) if model is None else model)
+
+    def start(self, model):
+        """s: the summary's statistics leave out the rows before (summary.start, else the
+        model's statistics.start, else 0)."""
+        if self.summary.start is not None:
+            return self.summary.start
+        section = model.get("statistics")
+        start = section.get("start", 0.0) if isinstance(section, dict) else 0.0
+        return float(start) if isinstance(start, (int, float)) else 0.0
+
+    def digest(self, name, values):
+        """SHA-256 of everything the case's model and run are made of: the command, the base
+        model (as written, file names absolute), its folder, `set`, the name and the values
+        (Python's repr: exact for numbers, in their order)."""
+        key = "\n".join([self.command, self.base_digest, str(self.base_dir),
+                         repr(list(self.fixed.items())), name, repr(list(values.items()))])
+        return hashlib.sha256(key.encode()).hexdigest()
 
 
 def _split(path):
@@ -538,22 +576,13 @@ def parse(data, marks, base=None, base_path=None, executable=None):
 
     stats_section = "statistics" in base or "statistics" in fixed
     summary = _summary(data.get("summary"), marks, stats_section)
-    cases = []
+    batch = Batch(base, base_path, [], paths, summary, command, timeout,
+                  marks.source if marks.node is not None else "cases", dict(fixed))
+    written = copy.deepcopy(base)
+    if batch.base_dir:
+        absolute_files(written, batch.base_dir)
+    batch.base_digest = hashlib.sha256(dump_model(written).encode()).hexdigest()
     for name, (_, _, values) in zip(names, raw):
-        model = copy.deepcopy(base)
-        for path, value in itertools.chain(fixed.items(), values.items()):
-            set_value(model, path, value)
-        if base_dir:
-            absolute_files(model, base_dir)
-        header = f"# seaflex batch case {name}" + "".join(
-            f"\n#   {p} = {value_text(v)}" for p, v in values.items()) + "\n"
-        text = header + dump_model(model)
-        digest = hashlib.sha256(f"{command}\n{text}".encode()).hexdigest()
-        start = summary.start
-        if start is None:
-            section = model.get("statistics")
-            start = section.get("start", 0.0) if isinstance(section, dict) else 0.0
-            start = float(start) if isinstance(start, (int, float)) else 0.0
-        cases.append(Case(name, values, text, digest, start))
-    return Batch(base, base_path, cases, paths, summary, command, timeout,
-                 marks.source if marks.node is not None else "cases")
+        batch.cases.append(Case(name, values, batch.digest(name, values)))
+    return batch
+

@@ -33,6 +33,8 @@ SUMMARY = "summary.csv"
 # connecting to a scheduler gives up after this long (Dask's own default is 30 s)
 CONNECT_TIMEOUT_S = 5
 MAX_WORKERS = 1024
+# cases handed to Dask at a time (each with its model's text); the others wait their turn
+MAX_IN_FLIGHT = 512
 
 
 def _base(base_model):
@@ -205,6 +207,8 @@ def run(base_model, cases, client=None, output="batch", workers=None, scheduler=
     batch = parse(data, marks, base, base_path, executable)
     output = _output_folder(output)
     exe = find_executable(executable)
+    if exe and os.path.isfile(exe):
+        exe = os.path.abspath(exe)
     names = [c.name for c in batch.cases]
     _clean_temporaries(output, names)
 
@@ -226,18 +230,28 @@ def run(base_model, cases, client=None, output="batch", workers=None, scheduler=
         try:
             from distributed import as_completed
             token = uuid.uuid4().hex[:8]
-            futures = {}
-            for case in todo:
-                task = {"name": case.name, "values": case.values, "text": case.text,
-                        "digest": case.digest, "output": output, "command": batch.command,
-                        "executable": os.path.abspath(exe) if exe and os.path.isfile(exe)
-                        else exe, "timeout": batch.timeout, "summary": summary,
-                        "start": case.start}
+            futures, pending = {}, iter(todo)
+            running = as_completed([], loop=client.loop)
+
+            def submit_next():
+                case = next(pending, None)
+                if case is None:
+                    return
+                model = batch.model(case)
+                task = {"name": case.name, "values": case.values,
+                        "text": batch.text(case, model), "digest": case.digest,
+                        "output": output, "command": batch.command, "executable": exe,
+                        "timeout": batch.timeout, "summary": summary,
+                        "start": batch.start(model)}
                 future = client.submit(run_case, task, key=f"seaflex-case-{case.name}-{token}",
                                        retries=1)
                 futures[future] = case
-            for future in as_completed(list(futures), loop=client.loop):
-                case = futures[future]
+                running.add(future)
+
+            for _ in range(MAX_IN_FLIGHT):  # the rest as these finish
+                submit_next()
+            for future in running:
+                case = futures.pop(future)
                 try:
                     row = future.result()
                 except Exception as e:  # lost workers (KilledWorker) or a broken environment
@@ -245,6 +259,7 @@ def run(base_model, cases, client=None, output="batch", workers=None, scheduler=
                            "message": f"{type(e).__name__}: {e}", "reused": False}
                 rows[case.name] = row
                 bar.update(row)
+                submit_next()
         finally:
             for thing in closing:
                 thing.close()

@@ -29,7 +29,7 @@ def test_a_table_times_a_product():
     assert b.cases[3].values == {"environment.waves.hs": 5.0, "environment.waves.tp": 12.5}
     assert b.paths == ["environment.waves.hs", "environment.waves.tp"]
     # the RAO table, relative to the base model in its file, is absolute in the case's model
-    assert re.findall(r"file: (.*)", b.cases[0].text) == [str(REPO / "examples" /
+    assert re.findall(r"file: (.*)", b.text(b.cases[0])) == [str(REPO / "examples" /
                                                            "drilling_rig_raos.csv")]
     # the same case twice has the same digest; another value another one
     again = parse(cases, Marks("cases"), *batch._base(ModelLike()), EXE)
@@ -41,7 +41,7 @@ def test_names_fall_back_to_numbers():
     b = parse({"product": {"bodies.platform.position": [[0, 0, -5], [10, 0, -5]]}},
               Marks("cases"), *batch._base(str(REPO / "examples" / "drilling_rig.yaml")), EXE)
     assert [c.name for c in b.cases] == ["case1", "case2"]  # a list makes no folder name
-    assert "position: [10, 0, -5]" in b.cases[1].text
+    assert "position: [10, 0, -5]" in b.text(b.cases[1])
 
 
 def test_the_case_model_runs_from_its_own_folder(tmp_path):
@@ -51,3 +51,16 @@ def test_the_case_model_runs_from_its_own_folder(tmp_path):
                       output=tmp_path, workers=1, progress=False, executable=EXE)
     assert list(frame["status"]) == ["ok"], frame["message"][0]
     assert frame["platform.z.min"][0] < frame["platform.z.max"][0]
+
+
+def test_more_cases_than_in_flight(tmp_path, monkeypatch):
+    # Dask holds at most MAX_IN_FLIGHT cases (with their models) at a time; the rest follow
+    monkeypatch.setattr(batch, "MAX_IN_FLIGHT", 2)
+    frame = batch.run(str(REPO / "examples" / "double_pendulum.yaml"),
+                      {"set": {"dynamics.duration": 0.1},
+                       "product": {"bodies.upper.mass": [1.0, 1.5, 2.0, 2.5, 3.0]},
+                       "summary": {"channels": ["upper.z"], "statistics": ["min"]}},
+                      output=tmp_path, workers=1, progress=False, executable=EXE)
+    assert list(frame["status"]) == ["ok"] * 5
+    assert list(frame["case"]) == ["mass=1", "mass=1.5", "mass=2", "mass=2.5", "mass=3"]
+    assert list(frame.columns[9:]) == ["upper.z.min"]

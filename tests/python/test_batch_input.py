@@ -94,7 +94,7 @@ def test_a_key_the_model_leaves_out_but_the_format_knows_is_accepted():
     b = parse({"product": {"environment.water": [{"density": 1000.0}]}}, Marks("cases"),
               *batch._base(str(PENDULUM)), EXE)
     assert [c.name for c in b.cases] == ["case1"]  # a mapping makes no name
-    assert "water: {density: 1000.0}" in b.cases[0].text
+    assert "water: {density: 1000.0}" in b.text(b.cases[0])
 
 
 def test_python_api_messages():
