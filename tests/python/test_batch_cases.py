@@ -63,4 +63,4 @@ def test_more_cases_than_in_flight(tmp_path, monkeypatch):
                       output=tmp_path, workers=1, progress=False, executable=EXE)
     assert list(frame["status"]) == ["ok"] * 5
     assert list(frame["case"]) == ["mass=1", "mass=1.5", "mass=2", "mass=2.5", "mass=3"]
-    assert list(frame.columns[9:]) == ["upper.z.min"]
+    assert list(frame.columns[8:]) == ["upper.z.min"]
