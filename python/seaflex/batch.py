@@ -97,7 +97,11 @@ class _Progress:
     def update(self, row):
         self.done += 1
         self.failed += row.get("status") != "ok"
-        if not self.enabled:
+        self.show(row)
+
+    def show(self, row=None):
+        """Draws the bar (on a terminal; a log gets a line per finished case)."""
+        if not self.enabled or (row is None and not self.tty):
             return
         width = 30
         filled = int(width * self.done / max(1, self.total))
@@ -226,6 +230,7 @@ def run(base_model, cases, client=None, output="batch", workers=None, scheduler=
             bar.update(rows[case.name])
     summary = {"channels": batch.summary.channels, "statistics": batch.summary.statistics}
     if todo:
+        bar.show()  # before the cluster starts (a second or two)
         client, closing = _connect(client, workers, scheduler)
         try:
             from distributed import as_completed

@@ -53,14 +53,22 @@ def test_the_case_model_runs_from_its_own_folder(tmp_path):
     assert frame["platform.z.min"][0] < frame["platform.z.max"][0]
 
 
-def test_more_cases_than_in_flight(tmp_path, monkeypatch):
+def test_more_cases_than_in_flight(tmp_path, monkeypatch, capsys):
     # Dask holds at most MAX_IN_FLIGHT cases (with their models) at a time; the rest follow
     monkeypatch.setattr(batch, "MAX_IN_FLIGHT", 2)
     frame = batch.run(str(REPO / "examples" / "double_pendulum.yaml"),
                       {"set": {"dynamics.duration": 0.1},
                        "product": {"bodies.upper.mass": [1.0, 1.5, 2.0, 2.5, 3.0]},
                        "summary": {"channels": ["upper.z"], "statistics": ["min"]}},
-                      output=tmp_path, workers=1, progress=False, executable=EXE)
+                      output=tmp_path, workers=1, progress=True, executable=EXE)
     assert list(frame["status"]) == ["ok"] * 5
+    # the progress bar, not on a terminal: a line per finished case, in the order they finish
+    lines = capsys.readouterr().err.splitlines()
+    bars = [line for line in lines if line.startswith("[")]
+    assert len(bars) == 5
+    for i, line in enumerate(bars):
+        filled = 30 * (i + 1) // 5
+        assert re.fullmatch(rf"\[#{{{filled}}}\.{{{30 - filled}}}\] {i + 1}/5 cases, 0 failed, "
+                            r"\d+ s: mass=[0-9.]+ ok", line), line
     assert list(frame["case"]) == ["mass=1", "mass=1.5", "mass=2", "mass=2.5", "mass=3"]
     assert list(frame.columns[8:]) == ["upper.z.min"]
