@@ -107,8 +107,9 @@ void add_batch_command(CLI::App& app) {
   cmd->add_option("-o,--output", options->output, "output directory")->capture_default_str();
   auto* workers =
       cmd->add_option("--workers", options->workers,
-                      "worker processes of a local cluster (default: the machine's cores)")
-          ->check(whole_number(1024));
+                      "worker processes of a local cluster (default and most: the machine's "
+                      "hardware threads)")
+          ->check(thread_count());
   cmd->add_option("--scheduler", options->scheduler,
                   "address of a running Dask scheduler (tcp://HOST:PORT) whose workers run the "
                   "cases")

@@ -32,7 +32,6 @@ __all__ = ["run", "main", "BatchError"]
 SUMMARY = "summary.csv"
 # connecting to a scheduler gives up after this long (Dask's own default is 30 s)
 CONNECT_TIMEOUT_S = 5
-MAX_WORKERS = 1024
 # cases handed to Dask at a time (each with its model's text); the others wait their turn
 MAX_IN_FLIGHT = 512
 
@@ -169,8 +168,9 @@ def _connect(client, workers, scheduler):
                 from None
         return c, [c]
     n = workers if workers is not None else (os.cpu_count() or 1)
-    if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_WORKERS:
-        raise BatchError(f"workers: expected a whole number from 1 to {MAX_WORKERS}, got {n}")
+    problem = _worker_count(n)
+    if problem:
+        raise BatchError(f"workers: {problem}")
     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                            dashboard_address=None, silence_logs=40)
     c = Client(cluster, set_as_default=False)
@@ -279,15 +279,26 @@ def run(base_model, cases, client=None, output="batch", workers=None, scheduler=
     return frame
 
 
+def _worker_count(n):
+    """A worker count: a whole number from 1 to the machine's cores (more workers than cores
+    run no faster, and each is a Python process of its own); else the message."""
+    cores = os.cpu_count() or 1
+    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+        return f"must be a whole number from 1 to {cores} (the cores of this machine), got '{n}'"
+    if n > cores:
+        return (f"{n} is more than the {cores} core{'s' if cores != 1 else ''} of this machine; "
+                f"use at most {cores} (or a cluster: --scheduler)")
+    return None
+
+
 def _whole_number(text):
     try:
         n = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number from 1 to {MAX_WORKERS}, "
-                                         f"got '{text}'") from None
-    if not 1 <= n <= MAX_WORKERS:
-        raise argparse.ArgumentTypeError(f"expected a whole number from 1 to {MAX_WORKERS}, "
-                                         f"got {n}")
+        n = text
+    problem = _worker_count(n)
+    if problem:
+        raise argparse.ArgumentTypeError(problem)
     return n
 
 
@@ -301,7 +312,8 @@ def main(argv=None):
                         help="output folder: a folder per case and summary.csv (default: batch)")
     where = parser.add_mutually_exclusive_group()
     where.add_argument("--workers", type=_whole_number,
-                       help="worker processes of a local cluster (default: the machine's cores)")
+                       help="worker processes of a local cluster (default and most: the "
+                            "machine's cores)")
     where.add_argument("--scheduler", metavar="ADDRESS",
                        help="a running Dask scheduler (tcp://HOST:PORT) whose workers run the "
                             "cases")

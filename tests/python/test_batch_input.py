@@ -137,8 +137,20 @@ def test_an_unreachable_scheduler_is_a_clear_error_not_a_hang(tmp_path):
 
 
 def test_workers_and_scheduler_options(tmp_path):
+    cores = os.cpu_count()
     stderr, _ = refused(tmp_path, cases(GOOD), "--workers", "0")
-    assert stderr.startswith("--workers: must be a whole number from 1 to 1024, got '0'\n")
+    assert stderr.startswith(f"--workers: must be a whole number from 1 to {cores} (the hardware "
+                             "threads of this machine), got '0'\n")
+    # more workers than cores: refused (no faster, a Python process each)
+    stderr, _ = refused(tmp_path, cases(GOOD), "--workers", str(cores + 1))
+    assert stderr.startswith(f"--workers: {cores + 1} is more than the {cores} hardware threads "
+                             "of this machine (std::thread::hardware_concurrency); use at most "
+                             f"{cores}\n")
+    with pytest.raises(BatchError) as e:
+        batch.run(PENDULUM, {"set": {"dynamics.duration": 0.1}}, output=tmp_path / "o",
+                  workers=cores + 1, executable=EXE)
+    assert str(e.value) == (f"workers: {cores + 1} is more than the {cores} cores of this "
+                            f"machine; use at most {cores} (or a cluster: --scheduler)")
     stderr, _ = refused(tmp_path, cases(GOOD), "--workers", "2", "--scheduler", "tcp://h:1")
     assert stderr.startswith("--workers excludes --scheduler\n")
 
