@@ -72,3 +72,16 @@ def test_more_cases_than_in_flight(tmp_path, monkeypatch, capsys):
                             r"\d+ s: mass=[0-9.]+ ok", line), line
     assert list(frame["case"]) == ["mass=1", "mass=1.5", "mass=2", "mass=2.5", "mass=3"]
     assert list(frame.columns[8:]) == ["upper.z.min"]
+
+
+def test_a_case_past_its_timeout_is_stopped(tmp_path):
+    # 30 s of the pendulum take about 4 s; the timeout stops it at 0.5 s
+    frame = batch.run(str(REPO / "examples" / "double_pendulum.yaml"),
+                      {"set": {"dynamics.duration": 30.0}, "timeout": 0.5,
+                       "table": [{"name": "long"}]},
+                      output=tmp_path, workers=1, progress=False, executable=EXE)
+    assert list(frame["status"]) == ["timeout"]
+    assert frame["message"][0] == "stopped after the case's timeout of 0.5 s"
+    assert 0.5 <= frame["wall_time"][0] < 10  # loosely: stopped, not run to the end
+    assert (tmp_path / "long" / "failed.json").exists()
+    assert not (tmp_path / "long" / "done.json").exists()
