@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "batch_command.hpp"
 #include "fatigue_command.hpp"
 #include "mode_output.hpp"
 #include "option_checks.hpp"
@@ -370,6 +371,7 @@ int main(int argc, char** argv) {
       "year and life; writes DIR/<beam>.fatigue_total.csv");
   fatigue->add_option("SCATTER", scatter_file, "scatter diagram (YAML)")->required();
   fatigue->add_option("-o,--output", dir, "output directory")->capture_default_str();
+  cli::add_batch_command(app);  // runs in its callback (python3 -m seaflex.batch)
 
   try {
     app.parse(argc, argv);

@@ -73,9 +73,18 @@ struct Hdf5Recorder::Impl {
       throw std::runtime_error(fmt::format("cannot write {}: HDF5 {} failed", path.string(), what));
   }
 
+  // creation properties of a group or dataset without modification times, so that the same
+  // run writes the same bytes (batches compare their cases with serial runs byte for byte)
+  Handle untimed(hid_t plist_class) const {
+    Handle plist(check(H5Pcreate(plist_class), "H5Pcreate"), H5Pclose);
+    check_status(H5Pset_obj_track_times(plist.get(), false), "H5Pset_obj_track_times");
+    return plist;
+  }
+
   Handle group(hid_t parent, const std::string& name) {
+    const Handle gcpl = untimed(H5P_GROUP_CREATE);
     return {
-        check(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate"),
+        check(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), "H5Gcreate"),
         H5Gclose};
   }
 
@@ -109,7 +118,7 @@ struct Hdf5Recorder::Impl {
                        "H5Screate_simple"),
                  H5Sclose);
     Handle set(check(H5Dcreate2(parent, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
-                                H5P_DEFAULT, H5P_DEFAULT),
+                                untimed(H5P_DATASET_CREATE).get(), H5P_DEFAULT),
                      "H5Dcreate"),
                H5Dclose);
     check_status(H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values),
@@ -120,7 +129,7 @@ struct Hdf5Recorder::Impl {
     const hsize_t n = values.size();
     Handle space(check(H5Screate_simple(1, &n, nullptr), "H5Screate_simple"), H5Sclose);
     Handle set(check(H5Dcreate2(parent, name.c_str(), H5T_STD_I32LE, space.get(), H5P_DEFAULT,
-                                H5P_DEFAULT, H5P_DEFAULT),
+                                untimed(H5P_DATASET_CREATE).get(), H5P_DEFAULT),
                      "H5Dcreate"),
                H5Dclose);
     check_status(H5Dwrite(set.get(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
@@ -133,7 +142,7 @@ struct Hdf5Recorder::Impl {
     const hsize_t n = v.size();
     Handle space(check(H5Screate_simple(1, &n, nullptr), "H5Screate_simple"), H5Sclose);
     Handle set(check(H5Dcreate2(parent, name.c_str(), type.get(), space.get(), H5P_DEFAULT,
-                                H5P_DEFAULT, H5P_DEFAULT),
+                                untimed(H5P_DATASET_CREATE).get(), H5P_DEFAULT),
                      "H5Dcreate"),
                H5Dclose);
     std::vector<const char*> ptrs;
@@ -166,7 +175,7 @@ struct Hdf5Recorder::Impl {
     }
     Handle space(check(H5Screate_simple(rank, dims.data(), max.data()), "H5Screate_simple"),
                  H5Sclose);
-    Handle plist(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
+    Handle plist = untimed(H5P_DATASET_CREATE);
     check_status(H5Pset_chunk(plist.get(), rank, chunk.data()), "H5Pset_chunk");
     if (compress) {
       check_status(H5Pset_shuffle(plist.get()), "H5Pset_shuffle");
