@@ -33,7 +33,7 @@ REPO = Path(__file__).resolve().parents[2]
 def measure(workers, cases, folder):
     t0 = time.monotonic()
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=50)
+                           dashboard_address=":0", silence_logs=50)
     client = Client(cluster, set_as_default=False)
     client.wait_for_workers(workers)
     startup = time.monotonic() - t0

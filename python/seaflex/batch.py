@@ -171,8 +171,10 @@ def _connect(client, workers, scheduler):
     problem = _worker_count(n)
     if problem:
         raise BatchError(f"workers: {problem}")
+    # dashboard on a free port: with None distributed 2022.12 still serves HTTP on 8787 and
+    # warns on stderr when another cluster (a second batch) holds that port
     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=40)
+                           dashboard_address=":0", silence_logs=40)
     c = Client(cluster, set_as_default=False)
     return c, [c, cluster]
 

@@ -98,7 +98,7 @@ def test_a_worker_killed_mid_case_loses_nothing(tmp_path, serial):
     (tmp_path / "cases.yaml").write_text(cases_yaml())
     out = tmp_path / "out"
     cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=50)
+                           dashboard_address=":0", silence_logs=50)
     client = Client(cluster, set_as_default=False)
     result = {}
     try:
