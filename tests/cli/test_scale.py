@@ -93,6 +93,20 @@ class ModelCheckAtScale(TempDirCase):
         self.assertIn("model OK", r.stdout)
 
 
+BENCH_RISER = os.path.join(SRC, "bench/riser/riser_n1000.yaml")
+
+
+def riser_model(case, replacements):
+    """bench/riser/riser_n1000.yaml with each (old, new) text replaced; every old text must
+    be there."""
+    with open(BENCH_RISER) as f:
+        text = f.read()
+    for old, new in replacements:
+        case.assertIn(old, text)
+        text = text.replace(old, new)
+    return text
+
+
 class RiserStaticsAtScale(TempDirCase):
     @release_only
     def test_10000_element_riser(self):
@@ -100,11 +114,8 @@ class RiserStaticsAtScale(TempDirCase):
         # stopped at load factor 1.2e-4 before ("a mode that the loads drive": a
         # regularization of 1e-14 x the largest diagonal, 12 EI / l^3 ~ 2e15, outweighed the
         # riser's string stiffness); now about 3 s and 130 MB
-        with open(os.path.join(SRC, "bench/riser/riser_n1000.yaml")) as f:
-            text = f.read()
-        text = text.replace("elements: 1000\n", "elements: 10000\n")
-        text = text.replace("  current: {speed: 3.0, direction: 0}\n", "")
-        self.assertIn("elements: 10000", text)
+        text = riser_model(self, [("elements: 1000\n", "elements: 10000\n"),
+                                  ("  current: {speed: 3.0, direction: 0}\n", "")])
         self.assertNotIn("current:", text)
         path = self.model(text)
         out = os.path.join(self.dir, "out")
@@ -143,12 +154,8 @@ class RiserDynamicsAtScale(TempDirCase):
         # 3 cm element (5e-7 kg m^2) into 1e7 rad/s^2. The statics solution is an
         # equilibrium of the dynamic equations at rest (steady current, no waves), so the
         # exact motion is none: every node must stay where statics put it.
-        with open(os.path.join(SRC, "bench/riser/riser_n1000.yaml")) as f:
-            text = f.read()
-        text = text.replace("elements: 1000\n", "elements: 10000\n")
-        text = text.replace("duration: 600\n", "duration: 3\n")
-        self.assertIn("elements: 10000", text)
-        self.assertIn("duration: 3\n", text)
+        text = riser_model(self, [("elements: 1000\n", "elements: 10000\n"),
+                                  ("duration: 600\n", "duration: 3\n")])
         self.assertIn("current: {speed: 3.0", text)
         path = self.model(text)
         out = os.path.join(self.dir, "out")
@@ -171,8 +178,7 @@ class RiserDynamicsAtScale(TempDirCase):
         # the start would move the nodes by metres)
         mid = header.index("riser.n5000.x")
         coarse = os.path.join(self.dir, "coarse")
-        r = run_limited(["statics", os.path.join(SRC, "bench/riser/riser_n1000.yaml"), "-o",
-                         coarse], GIB, timeout=60)
+        r = run_limited(["statics", BENCH_RISER, "-o", coarse], GIB, timeout=60)
         self.assertEqual(r.returncode, 0, r.stderr[-2000:])
         with open(os.path.join(coarse, "statics.riser.along.csv")) as f:
             along = list(csv.DictReader(f))
