@@ -117,7 +117,7 @@ TEST(ModelLoader, BuildsTheCantilever) {
   EXPECT_EQ(m.gravity, Vec3(0, 0, -kStandardGravity));
   const auto& beam = dynamic_cast<const AncfBeam&>(*m.system->find_body("beam"));
   EXPECT_DOUBLE_EQ(beam.length(), 10.0);
-  EXPECT_DOUBLE_EQ(beam.section().EI(), 210e9 * 8.33e-6);
+  EXPECT_DOUBLE_EQ(beam.section(0).EI(), 210e9 * 8.33e-6);
   ASSERT_TRUE(m.dynamics);
   EXPECT_EQ(m.dynamics->output_interval, 1e-4);  // defaults to the step
   EXPECT_FALSE(m.dynamics->start_from_statics);
@@ -146,8 +146,8 @@ statics: {load_steps: 5, tolerance: 1e-9}
   const auto& riser = dynamic_cast<const AncfBeam&>(*m.system->find_body("riser"));
   EXPECT_EQ(riser.num_elements(), 6);
   EXPECT_NEAR(riser.length(), 100 + std::sqrt(50.0 * 50 + 50 * 50), 1e-12);
-  EXPECT_NEAR(riser.section().area, 3.14159265358979 / 4 * (0.36 - 0.16), 1e-12);
-  EXPECT_NEAR(riser.section().second_moment,
+  EXPECT_NEAR(riser.section(0).area, 3.14159265358979 / 4 * (0.36 - 0.16), 1e-12);
+  EXPECT_NEAR(riser.section(0).second_moment,
               3.14159265358979 / 64 * (0.6 * 0.6 * 0.6 * 0.6 - 0.4 * 0.4 * 0.4 * 0.4), 1e-12);
   EXPECT_EQ(m.system->num_constraints(), 6);
   EXPECT_EQ(m.system->forces().size(), 3u);

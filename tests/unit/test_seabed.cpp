@@ -91,7 +91,7 @@ ContactCase make_case(std::shared_ptr<const hydro::Seabed> seabed, double mu_a, 
   p.friction_lateral = mu_l;
   p.slip_velocity = 0.05;
   c.sys->add_force(std::make_unique<SeabedContact>("line.seabed", beam, std::move(seabed), p, 0.3,
-                                                   beam.section().mass_per_length()));
+                                                   beam.section(0).mass_per_length()));
   c.sys->finalize();
   c.s = c.sys->initial_state();
   // a bent, moving configuration: slides at about the slip velocity, sinking and rising

@@ -109,7 +109,7 @@ hydrodynamics:
   riser: {cd: 1.0, contents_density: 1200}
 )";
   const Solved s = solve(riser("[0, 0, -10]", "[0, 0, -110]", water) + hydro);
-  const post::PipePressure p = io::pipe_pressure(s.model, *s.beam);
+  const post::PipePressure p = io::pipe_pressure(s.model, *s.beam).at(0);
   ASSERT_EQ(p.water_density, 1025.0);
   ASSERT_EQ(p.external_diameter, 0.5);   // the Morison diameter: outer_diameter
   ASSERT_EQ(p.contents_diameter, 0.45);  // contents_diameter: inner_diameter

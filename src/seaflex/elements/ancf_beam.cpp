@@ -58,26 +58,41 @@ BeamGeometry BeamGeometry::polyline(const std::vector<Vec3>& points,
 
 AncfBeam::AncfBeam(std::string name, BeamGeometry geometry, BeamSection section,
                    BeamOptions options)
+    : AncfBeam(std::move(name), geometry, std::vector<BeamSection>{section},
+               std::vector<int>(geometry.element_lengths.size(), 0), options) {}
+
+AncfBeam::AncfBeam(std::string name, BeamGeometry geometry, std::vector<BeamSection> sections,
+                   std::vector<int> section_of, BeamOptions options)
     : Body(std::move(name)),
       geometry_(std::move(geometry)),
-      section_(section),
+      sections_(std::move(sections)),
+      section_of_(std::move(section_of)),
       options_(options),
       element_lengths_(geometry_.element_lengths) {
   if (element_lengths_.empty()) throw std::invalid_argument("AncfBeam: no elements");
+  if (section_of_.size() != element_lengths_.size())
+    throw std::invalid_argument("AncfBeam: one section index per element needed");
+  for (int s : section_of_)
+    if (s < 0 || s >= static_cast<int>(sections_.size()))
+      throw std::invalid_argument("AncfBeam: section index out of range");
   node_arc_.push_back(0.0);
   for (double l : element_lengths_) node_arc_.push_back(node_arc_.back() + l);
   total_length_ = node_arc_.back();
-  // one kernel per distinct element length (all equal for a straight mesh)
-  std::vector<double> kernel_lengths;
-  for (double l : element_lengths_) {
+  // one kernel per distinct (element length, section): one for a uniform straight mesh
+  std::vector<std::pair<double, int>> kernel_keys;
+  for (std::size_t el = 0; el < element_lengths_.size(); ++el) {
+    const double l = element_lengths_[el];
+    const int s = section_of_[el];
     int found = -1;
-    for (std::size_t k = 0; k < kernel_lengths.size(); ++k)
-      if (std::abs(kernel_lengths[k] - l) <= 1e-12 * l) found = static_cast<int>(k);
+    for (std::size_t k = 0; k < kernel_keys.size(); ++k)
+      if (kernel_keys[k].second == s && std::abs(kernel_keys[k].first - l) <= 1e-12 * l)
+        found = static_cast<int>(k);
     if (found < 0) {
-      kernel_lengths.push_back(l);
-      kernels_.emplace_back(l, section_.EA(), section_.EI(), options_.axial, options_.bending,
+      const BeamSection& sec = sections_[s];
+      kernel_keys.emplace_back(l, s);
+      kernels_.emplace_back(l, sec.EA(), sec.EI(), options_.axial, options_.bending,
                             options_.gauss_points);
-      masses_.push_back(ancf_cable::mass_matrix(section_.mass_per_length(), l));
+      masses_.push_back(ancf_cable::mass_matrix(sec.mass_per_length(), l));
       found = static_cast<int>(kernels_.size() - 1);
     }
     kernel_of_.push_back(found);
@@ -136,14 +151,14 @@ void AncfBeam::add_gravity(const Vec3& g, const State&, AssemblyTarget& target) 
   // thesis eq. (175): uniform load rho A g per unit length through eq. (127)
   for (int el = 0; el < num_elements(); ++el)
     target.forces->segment<12>(node_index(el)) +=
-        ancf_cable::uniform_load(section_.mass_per_length() * g, element_lengths_[el]);
+        ancf_cable::uniform_load(section(el).mass_per_length() * g, element_lengths_[el]);
 }
 
 double AncfBeam::gravity_potential(const Vec3& g, const State& state) const {
   // the gravity force is constant, so V = -Q_g . q
   double V = 0.0;
   for (int el = 0; el < num_elements(); ++el)
-    V -= ancf_cable::uniform_load(section_.mass_per_length() * g, element_lengths_[el])
+    V -= ancf_cable::uniform_load(section(el).mass_per_length() * g, element_lengths_[el])
              .dot(element_coordinates(state.q, el));
   return V;
 }
@@ -182,12 +197,25 @@ void AncfBeam::add_channels(ChannelList& channels) const {
     }
 }
 
+double AncfBeam::mass() const {
+  double m = 0.0;
+  for (int el = 0; el < num_elements(); ++el)
+    m += section(el).mass_per_length() * element_lengths_[el];
+  return m;
+}
+
 std::string AncfBeam::summary() const {
+  if (sections_.size() > 1)
+    return fmt::format(
+        "{} elements, {} nodes, {} coordinates; length {:g} m, mass {:.6g} kg; {} sections; "
+        "axial {}, bending {}",
+        num_elements(), num_nodes(), num_coordinates(), total_length_, mass(), sections_.size(),
+        ancf_cable::to_string(options_.axial), ancf_cable::to_string(options_.bending));
+  const BeamSection& sec = sections_.front();
   return fmt::format(
       "{} elements, {} nodes, {} coordinates; length {:g} m, mass {:.6g} kg; EA {:.4g} N, "
       "EI {:.4g} N m^2; axial {}, bending {}",
-      num_elements(), num_nodes(), num_coordinates(), total_length_,
-      section_.mass_per_length() * total_length_, section_.EA(), section_.EI(),
+      num_elements(), num_nodes(), num_coordinates(), total_length_, mass(), sec.EA(), sec.EI(),
       ancf_cable::to_string(options_.axial), ancf_cable::to_string(options_.bending));
 }
 

@@ -3,6 +3,8 @@
 // offset() + 6k ... offset() + 6k + 5, so element k's 12 coordinates are contiguous.
 // The stress-free shape of every element is straight with its reference length; a
 // polyline start shape is a first guess for statics, not a stress-free curve.
+// A line made of sections (issue 18) is one beam whose elements carry different
+// cross-sections and materials: element k has section section_index(k).
 #pragma once
 
 #include <memory>
@@ -55,6 +57,10 @@ struct BeamOptions {
 class AncfBeam : public Body {
  public:
   AncfBeam(std::string name, BeamGeometry geometry, BeamSection section, BeamOptions options);
+  /// A line made of sections: element k has sections[section_of[k]] (section_of has one
+  /// entry per element, each a valid index into sections).
+  AncfBeam(std::string name, BeamGeometry geometry, std::vector<BeamSection> sections,
+           std::vector<int> section_of, BeamOptions options);
 
   std::string_view kind() const override { return "ancf_beam"; }
   Index num_coordinates() const override { return 6 * num_nodes(); }
@@ -77,7 +83,14 @@ class AncfBeam : public Body {
   double length() const { return total_length_; }
   /// Reference arc length of node k from the start node (m).
   double node_arc_length(int k) const { return node_arc_[k]; }
-  const BeamSection& section() const { return section_; }
+  /// The cross-section and material of element k.
+  const BeamSection& section(int k) const { return sections_[section_of_[k]]; }
+  /// Index into sections() of element k's section.
+  int section_index(int k) const { return section_of_[k]; }
+  /// The distinct sections, in the order given (one for a uniform beam).
+  const std::vector<BeamSection>& sections() const { return sections_; }
+  /// Total mass (kg) of the beam's own material.
+  double mass() const;
   /// Initial node positions and slopes, as built.
   const BeamGeometry& initial_geometry() const { return geometry_; }
   const BeamOptions& options() const { return options_; }
@@ -102,13 +115,14 @@ class AncfBeam : public Body {
 
  private:
   BeamGeometry geometry_;
-  BeamSection section_;
+  std::vector<BeamSection> sections_;
+  std::vector<int> section_of_;  // element -> section
   BeamOptions options_;
   std::vector<double> element_lengths_;
   std::vector<double> node_arc_;
   double total_length_ = 0.0;
-  std::vector<ancf_cable::CableElasticity> kernels_;  // one per distinct element length
-  std::vector<ancf_cable::Mat12> masses_;             // per distinct length
+  std::vector<ancf_cable::CableElasticity> kernels_;  // one per distinct (length, section)
+  std::vector<ancf_cable::Mat12> masses_;             // per distinct (length, section)
   std::vector<int> kernel_of_;                        // element -> kernel
   std::vector<math::BlockId> blocks_;                 // element -> matrix block
   ElementColoring coloring_;

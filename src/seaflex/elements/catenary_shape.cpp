@@ -50,6 +50,17 @@ double touchdown_mismatch(double a, double L, double X, double h) {
 BeamGeometry catenary_geometry(const Vec3& start, const Vec3& end, double length, int elements,
                                std::optional<double> seabed_z, CatenaryShape* shape) {
   if (elements < 1) throw std::invalid_argument("catenary: need at least one element");
+  return catenary_geometry(start, end, std::vector<double>(elements, length / elements), seabed_z,
+                           shape);
+}
+
+BeamGeometry catenary_geometry(const Vec3& start, const Vec3& end,
+                               const std::vector<double>& element_lengths,
+                               std::optional<double> seabed_z, CatenaryShape* shape) {
+  const int elements = static_cast<int>(element_lengths.size());
+  if (elements < 1) throw std::invalid_argument("catenary: need at least one element");
+  double length = 0.0;
+  for (double l : element_lengths) length += l;
   // work from the lower end P towards the upper end U
   const bool reversed = end.z() < start.z();
   const Vec3 P = reversed ? end : start, U = reversed ? start : end;
@@ -104,12 +115,15 @@ BeamGeometry catenary_geometry(const Vec3& start, const Vec3& end, double length
   const int n = elements;
   g.positions.resize(n + 1);
   g.slopes.resize(n + 1);
-  g.element_lengths.assign(n, L / n);
+  g.element_lengths = element_lengths;
+  std::vector<double> arc(n + 1, 0.0);  // node arc lengths from start
+  for (int k = 0; k < n; ++k) arc[k + 1] = arc[k] + element_lengths[k];
   // arc length from P's vertex reference: sigma = s - laid (touchdown), s + s_P (free)
   const double s_P = -a * std::sinh(xv / a);
   for (int k = 0; k <= n; ++k) {
     const int j = reversed ? n - k : k;  // node k of the beam is at arc length s from P
-    const double s = L * static_cast<double>(j) / n;
+    // arc length from P: from start, or from end when reversed
+    const double s = reversed ? L - arc[k] : arc[k];
     Vec3 p, t;
     if (c.touchdown && s <= c.laid_length) {
       p = P + s * e;

@@ -17,6 +17,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "seaflex/core/types.hpp"
 #include "seaflex/elements/ancf_beam.hpp"
@@ -37,6 +38,10 @@ struct CatenaryShape {
 /// chord, a vertical chord, or a line longer than the path along the seabed and straight
 /// up (it would have to pile up). shape, when given, receives a and the laid length.
 BeamGeometry catenary_geometry(const Vec3& start, const Vec3& end, double length, int elements,
+                               std::optional<double> seabed_z, CatenaryShape* shape = nullptr);
+/// The same with the given element lengths (from start; their sum is the line's length).
+BeamGeometry catenary_geometry(const Vec3& start, const Vec3& end,
+                               const std::vector<double>& element_lengths,
                                std::optional<double> seabed_z, CatenaryShape* shape = nullptr);
 
 }  // namespace seaflex

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "seaflex/hydro/wet_interval.hpp"
 
@@ -17,11 +18,25 @@ using ancf_cable::Vec4;
 MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
                          MorisonBeamCoefficients coefficients,
                          std::shared_ptr<const hydro::Ocean> ocean)
-    : Force(std::move(name)),
-      beam_(beam),
-      coefficients_(coefficients),
-      ocean_(std::move(ocean)),
-      rule_(math::gauss_legendre_unit(coefficients.gauss_points)) {}
+    : MorisonBeam(std::move(name), beam,
+                  std::vector<MorisonBeamCoefficients>(beam.sections().size(), coefficients),
+                  std::move(ocean)) {}
+
+MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
+                         std::vector<MorisonBeamCoefficients> coefficients,
+                         std::shared_ptr<const hydro::Ocean> ocean)
+    : Force(std::move(name)), beam_(beam), coefficients_(std::move(coefficients)),
+      ocean_(std::move(ocean)) {
+  if (coefficients_.size() != beam_.sections().size())
+    throw std::invalid_argument("MorisonBeam: one set of coefficients per beam section needed");
+  rule_ = math::gauss_legendre_unit(coefficients_.front().gauss_points);
+}
+
+bool MorisonBeam::constant_mass() const {
+  for (const auto& c : coefficients_)
+    if (c.ca != 0.0 || c.ca_axial != 0.0) return false;
+  return true;
+}
 
 void MorisonBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
   blocks_ = beam_.declare_element_blocks(matrix);
@@ -37,10 +52,10 @@ std::pair<double, double> MorisonBeam::wet_interval(const State& state, int k) c
   return hydro::wet_interval(above);
 }
 
-MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, const Vec3& rdot,
-                                               double t, double load_factor, bool derivatives,
+MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c, const Vec3& r,
+                                               const Vec3& rp, const Vec3& rdot, double t,
+                                               double load_factor, bool derivatives,
                                                bool with_buoyancy) const {
-  const MorisonBeamCoefficients& c = coefficients_;
   const double rho = ocean_->rho();
   const double D = c.diameter;
   const double area = 0.25 * std::numbers::pi * D * D;
@@ -80,17 +95,17 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const Vec3& r, const Vec3& rp, co
 }
 
 void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarget& target) const {
-  const MorisonBeamCoefficients& c = coefficients_;
   const MatrixScales& s = target.scales;
   const bool want_matrix = target.matrix != nullptr && s.any();
-  const double area_i = 0.25 * std::numbers::pi * c.internal_diameter * c.internal_diameter;
-  const double m_int = c.internal_density * area_i;  // contents' mass per length
-  const double area = 0.25 * std::numbers::pi * c.diameter * c.diameter;
-  const double ca_mass = ocean_->rho() * c.ca * area;
-  const double ca_axial_mass = ocean_->rho() * c.ca_axial * area;
-  const bool added_mass = ca_mass != 0.0 || ca_axial_mass != 0.0;
   // the beam's even, then odd elements; in parallel within each (core/parallel.hpp)
   for_each_colored(beam_.coloring(), [&](int k) {
+    const MorisonBeamCoefficients& c = coefficients_[beam_.section_index(k)];
+    const double area_i = 0.25 * std::numbers::pi * c.internal_diameter * c.internal_diameter;
+    const double m_int = c.internal_density * area_i;  // contents' mass per length
+    const double area = 0.25 * std::numbers::pi * c.diameter * c.diameter;
+    const double ca_mass = ocean_->rho() * c.ca * area;
+    const double ca_axial_mass = ocean_->rho() * c.ca_axial * area;
+    const bool added_mass = ca_mass != 0.0 || ca_axial_mass != 0.0;
     Mat12 K;
     const double l = beam_.element_length(k);
     const Vec12 e = beam_.element_coordinates(state.q, k);
@@ -113,7 +128,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       const Vec4 shx = ancf_cable::shape_dx(xi, l);
       const Vec3 r = E * sh, rp = E * shx, rdot = Ed * sh;
       const bool deriv = want_matrix && (s.kq != 0.0 || s.kv != 0.0);
-      const PointLoad pl = point_load(r, rp, rdot, state.t, load_factor, deriv);
+      const PointLoad pl = point_load(c, r, rp, rdot, state.t, load_factor, deriv);
       if (target.forces) {
         auto Q = target.forces->segment<12>(beam_.node_index(k));
         for (int i = 0; i < 4; ++i) Q.segment<3>(3 * i) += (dx * sh[i]) * pl.f;  // eq. (177)
@@ -149,8 +164,8 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
           rp_[j] += h;
           rm_[j] -= h;
           // buoyancy is uniform where wet: left out, so the surface is no step
-          df_dr.col(j) = (point_load(rp_, rp, rdot, state.t, load_factor, false, false).f -
-                          point_load(rm_, rp, rdot, state.t, load_factor, false, false).f) /
+          df_dr.col(j) = (point_load(c, rp_, rp, rdot, state.t, load_factor, false, false).f -
+                          point_load(c, rm_, rp, rdot, state.t, load_factor, false, false).f) /
                          (2.0 * h);
         }
         add_shape_product(K, sh, sh, df_dr, -s.kq * dx);

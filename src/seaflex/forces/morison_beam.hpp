@@ -54,15 +54,21 @@ class MorisonBeam : public Force {
  public:
   MorisonBeam(std::string name, const AncfBeam& beam, MorisonBeamCoefficients coefficients,
               std::shared_ptr<const hydro::Ocean> ocean);
+  /// A line made of sections: coefficients[i] applies to the elements of the beam's section
+  /// i (one entry per beam.sections(); gauss_points is taken from the first).
+  MorisonBeam(std::string name, const AncfBeam& beam,
+              std::vector<MorisonBeamCoefficients> coefficients,
+              std::shared_ptr<const hydro::Ocean> ocean);
 
   void declare_blocks(math::SparseBlockAssembler& matrix) override;
   void assemble(const State& state, double load_factor, AssemblyTarget& target) const override;
   double potential_energy(const State&) const override { return 0.0; }
-  bool constant_mass() const override {
-    return coefficients_.ca == 0.0 && coefficients_.ca_axial == 0.0;
-  }
+  bool constant_mass() const override;
 
-  const MorisonBeamCoefficients& coefficients() const { return coefficients_; }
+  /// The coefficients of the beam's section i (beam().section_index(element)).
+  const MorisonBeamCoefficients& coefficients(int section = 0) const {
+    return coefficients_[section];
+  }
   const AncfBeam& beam() const { return beam_; }
   /// Wet part [xi0, xi1] of element k; xi1 <= xi0 when dry.
   std::pair<double, double> wet_interval(const State& state, int k) const;
@@ -74,11 +80,12 @@ class MorisonBeam : public Force {
     Mat3 df_dv = Mat3::Zero();   // d f / d r_dot
     Mat3 df_drp = Mat3::Zero();  // d f / d r'
   };
-  PointLoad point_load(const Vec3& r, const Vec3& rp, const Vec3& rdot, double t,
-                       double load_factor, bool derivatives, bool with_buoyancy = true) const;
+  PointLoad point_load(const MorisonBeamCoefficients& c, const Vec3& r, const Vec3& rp,
+                       const Vec3& rdot, double t, double load_factor, bool derivatives,
+                       bool with_buoyancy = true) const;
 
   const AncfBeam& beam_;
-  MorisonBeamCoefficients coefficients_;
+  std::vector<MorisonBeamCoefficients> coefficients_;  // per beam section
   std::shared_ptr<const hydro::Ocean> ocean_;
   math::QuadratureRule rule_;
   std::vector<math::BlockId> blocks_;

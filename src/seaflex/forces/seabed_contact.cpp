@@ -1,6 +1,7 @@
 #include "seaflex/forces/seabed_contact.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 
 #include "seaflex/hydro/wet_interval.hpp"
@@ -18,13 +19,25 @@ SeabedContact::SeabedContact(std::string name, const AncfBeam& beam,
                              std::shared_ptr<const hydro::Seabed> seabed,
                              SeabedContactProperties properties, double width,
                              double mass_per_length)
+    : SeabedContact(std::move(name), beam, std::move(seabed), properties,
+                    std::vector<double>(beam.sections().size(), width),
+                    std::vector<double>(beam.sections().size(), mass_per_length)) {}
+
+SeabedContact::SeabedContact(std::string name, const AncfBeam& beam,
+                             std::shared_ptr<const hydro::Seabed> seabed,
+                             SeabedContactProperties properties, const std::vector<double>& widths,
+                             const std::vector<double>& masses_per_length)
     : Force(std::move(name)),
       beam_(beam),
       seabed_(std::move(seabed)),
       properties_(properties),
       rule_(math::gauss_legendre_unit(properties.gauss_points)) {
-  k_ = properties_.normal_stiffness * width;
-  c_ = 2.0 * properties_.damping * std::sqrt(k_ * mass_per_length);
+  if (widths.size() != beam.sections().size() || masses_per_length.size() != widths.size())
+    throw std::invalid_argument("SeabedContact: one width and mass per beam section needed");
+  for (std::size_t i = 0; i < widths.size(); ++i) {
+    k_.push_back(properties_.normal_stiffness * widths[i]);
+    c_.push_back(2.0 * properties_.damping * std::sqrt(k_.back() * masses_per_length[i]));
+  }
 }
 
 void SeabedContact::declare_blocks(math::SparseBlockAssembler& matrix) {
@@ -42,13 +55,14 @@ std::pair<double, double> SeabedContact::contact_interval(const State& state, in
   return hydro::wet_interval(above);
 }
 
-SeabedContact::PointForce SeabedContact::point_force(const Vec3& r, const Vec3& rp,
+SeabedContact::PointForce SeabedContact::point_force(int section, const Vec3& r, const Vec3& rp,
                                                      const Vec3& rdot, bool derivatives) const {
   PointForce out;
+  const double k = k_[section], c = c_[section];
   const hydro::SeabedPoint sp = seabed_->at(r.x(), r.y());
   const Vec3 n = sp.normal();
   const double d = sp.penetration(r);
-  const double F = k_ * d - c_ * n.dot(rdot);  // k d + c d_dot, d_dot = -n . r_dot
+  const double F = k * d - c * n.dot(rdot);  // k d + c d_dot, d_dot = -n . r_dot
   // no contact, or separating: no suction. At exactly d = 0 (a line laid on the seabed in
   // its first guess) the point is in contact with zero force: its tangent is the contact's
   // (the one-sided derivative), so the first Newton step of statics is held by the seabed
@@ -75,8 +89,8 @@ SeabedContact::PointForce SeabedContact::point_force(const Vec3& r, const Vec3& 
   if (friction) out.friction = -F * Mv / s;
   if (!derivatives) return out;
   // dF/dr = -k n^T (the normal of a plane is constant), dF/dv = -c n^T
-  const Eigen::RowVector3d dF_dr = -k_ * n.transpose();
-  const Eigen::RowVector3d dF_dv = -c_ * n.transpose();
+  const Eigen::RowVector3d dF_dr = -k * n.transpose();
+  const Eigen::RowVector3d dF_dv = -c * n.transpose();
   out.df_dr = n * dF_dr;
   out.df_dv = n * dF_dv;
   if (!friction) return out;
@@ -116,7 +130,7 @@ void SeabedContact::assemble(const State& state, double, AssemblyTarget& target)
       const double dx = l * (xi1 - xi0) * rule_.weights[g];
       const Vec4 sh = ancf_cable::shape(xi, l);
       const Vec4 shx = ancf_cable::shape_dx(xi, l);
-      const PointForce pf = point_force(E * sh, E * shx, Ed * sh, want_matrix);
+      const PointForce pf = point_force(beam_.section_index(k), E * sh, E * shx, Ed * sh, want_matrix);
       if (target.forces) {
         auto Q = target.forces->segment<12>(beam_.node_index(k));
         const Vec3 f = pf.normal + pf.friction;
@@ -174,7 +188,7 @@ double SeabedContact::potential_energy(const State& state) const {
       const double xi = xi0 + (xi1 - xi0) * rule_.points[g];
       const Vec3 r = E * ancf_cable::shape(xi, l);
       const double d = seabed_->at(r.x(), r.y()).penetration(r);
-      if (d > 0.0) energy += 0.5 * k_ * d * d * l * (xi1 - xi0) * rule_.weights[g];
+      if (d > 0.0) energy += 0.5 * k_[beam_.section_index(k)] * d * d * l * (xi1 - xi0) * rule_.weights[g];
     }
   }
   return energy;
@@ -195,7 +209,7 @@ SeabedContact::Totals SeabedContact::totals(const State& state) const {
       const double xi = xi0 + (xi1 - xi0) * rule_.points[g];
       const double dx = l * (xi1 - xi0) * rule_.weights[g];
       const Vec4 sh = ancf_cable::shape(xi, l);
-      const PointForce pf = point_force(E * sh, E * ancf_cable::shape_dx(xi, l), Ed * sh, false);
+      const PointForce pf = point_force(beam_.section_index(k), E * sh, E * ancf_cable::shape_dx(xi, l), Ed * sh, false);
       out.normal += dx * pf.normal;
       out.friction += dx * pf.friction;
     }

@@ -53,6 +53,10 @@ class SeabedContact : public Force {
   /// the damping.
   SeabedContact(std::string name, const AncfBeam& beam, std::shared_ptr<const hydro::Seabed> seabed,
                 SeabedContactProperties properties, double width, double mass_per_length);
+  /// A line made of sections: widths[i] and masses_per_length[i] for the beam's section i.
+  SeabedContact(std::string name, const AncfBeam& beam, std::shared_ptr<const hydro::Seabed> seabed,
+                SeabedContactProperties properties, const std::vector<double>& widths,
+                const std::vector<double>& masses_per_length);
 
   void declare_blocks(math::SparseBlockAssembler& matrix) override;
   void assemble(const State& state, double load_factor, AssemblyTarget& target) const override;
@@ -76,7 +80,8 @@ class SeabedContact : public Force {
   double touchdown(const State& state) const;
 
   const SeabedContactProperties& properties() const { return properties_; }
-  double stiffness_per_length() const { return k_; }
+  /// Normal stiffness per unit length (N/m/m) on the beam's section i.
+  double stiffness_per_length(int section = 0) const { return k_[section]; }
 
  private:
   struct PointForce {
@@ -86,13 +91,14 @@ class SeabedContact : public Force {
     Mat3 df_drp = Mat3::Zero();
     Mat3 df_dv = Mat3::Zero();
   };
-  PointForce point_force(const Vec3& r, const Vec3& rp, const Vec3& rdot, bool derivatives) const;
+  PointForce point_force(int section, const Vec3& r, const Vec3& rp, const Vec3& rdot,
+                         bool derivatives) const;
 
   const AncfBeam& beam_;
   std::shared_ptr<const hydro::Seabed> seabed_;
   SeabedContactProperties properties_;
-  double k_ = 0.0;  // per unit length (N/m/m)
-  double c_ = 0.0;  // per unit length (N s/m/m)
+  std::vector<double> k_;  // per beam section, per unit length (N/m/m)
+  std::vector<double> c_;  // per beam section, per unit length (N s/m/m)
   math::QuadratureRule rule_;
   std::vector<math::BlockId> blocks_;
 };

@@ -20,19 +20,22 @@ CodeCheckRecorder::CodeCheckRecorder(const std::filesystem::path& dir, const std
                                      const CodeCheckSettings& settings)
     : settings_(settings) {
   for (auto& r : beams) {
-    const BeamSection& sec = r.beam().section();
-    post::DnvPipe pipe;
-    pipe.outer_diameter = sec.outer_diameter;
-    pipe.wall = 0.5 * (sec.outer_diameter - sec.inner_diameter);
-    pipe.corrosion = settings_.corrosion;
-    pipe.fabrication = settings_.fabrication;
-    pipe.smys = settings_.smys;
-    pipe.smts = settings_.smts;
-    pipe.youngs_modulus = sec.youngs_modulus;
+    std::vector<post::DnvPipe> pipes;
+    for (const BeamSection& sec : r.beam().sections()) {
+      post::DnvPipe pipe;
+      pipe.outer_diameter = sec.outer_diameter;
+      pipe.wall = 0.5 * (sec.outer_diameter - sec.inner_diameter);
+      pipe.corrosion = settings_.corrosion;
+      pipe.fabrication = settings_.fabrication;
+      pipe.smys = settings_.smys;
+      pipe.smts = settings_.smts;
+      pipe.youngs_modulus = sec.youngs_modulus;
+      pipes.push_back(pipe);
+    }
     const std::size_t n = static_cast<std::size_t>(r.num_stations());
     const auto path = file(dir, prefix, r.beam().name());
     beams_.push_back({std::move(r),
-                      pipe,
+                      std::move(pipes),
                       {},
                       {},
                       std::vector<double>(n, -1.0),
@@ -71,7 +74,7 @@ void CodeCheckRecorder::record(const State& state, std::span<const double>) {
       const double t_ed =
           f.gamma_C * (f.gamma_F * b.tension_f[k] + f.gamma_E * (T - b.tension_f[k]));
       const double u_dnv = post::dnv_combined_utilisation(
-          b.pipe, f, m_d, t_ed, q(i, post::BeamQuantity::kPressureInternal),
+          b.pipes[b.results.beam().section_index(b.results.stations()[k].element)], f, m_d, t_ed, q(i, post::BeamQuantity::kPressureInternal),
           q(i, post::BeamQuantity::kPressureExternal));
       const double u_api = post::api_rp_2rd_utilisation(q(i, post::BeamQuantity::kStressVonMises),
                                                         settings_.smys, settings_.design_factor);

@@ -49,7 +49,7 @@ class CodeCheckRecorder : public Recorder {
  private:
   struct Beam {
     post::BeamResults results;
-    post::DnvPipe pipe;
+    std::vector<post::DnvPipe> pipes;  // per beam section
     std::vector<Vec3> moment_f;     // functional moment per station
     std::vector<double> tension_f;  // functional effective tension
     std::vector<double> dnv, dnv_t, api, api_t;

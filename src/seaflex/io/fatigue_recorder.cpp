@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <limits>
 
 #include "seaflex/elements/ancf_cable.hpp"
 
@@ -33,9 +34,13 @@ FatigueRecorder::FatigueRecorder(const std::filesystem::path& dir, const std::st
                                  const FatigueSettings& settings)
     : settings_(settings) {
   for (auto& r : beams) {
-    const BeamSection& sec = r.beam().section();
-    const double wall = settings_.thickness > 0.0 ? settings_.thickness
-                                                  : 0.5 * (sec.outer_diameter - sec.inner_diameter);
+    // the thinnest wall of the beam's sections
+    double wall = settings_.thickness;
+    if (!(wall > 0.0)) {
+      wall = std::numeric_limits<double>::infinity();
+      for (const BeamSection& sec : r.beam().sections())
+        wall = std::min(wall, 0.5 * (sec.outer_diameter - sec.inner_diameter));
+    }
     // DNV-RP-C203 (2016) eq. (2.4.3): ranges of the hot-spot stress (SCF included in the
     // stresses, record()) are scaled by (t/t_ref)^k
     const double factor = post::thickness_factor(wall, settings_.curve.t_ref, settings_.curve.k);
@@ -70,7 +75,6 @@ void FatigueRecorder::record(const State& state, std::span<const double>) {
   for (auto& b : beams_) {
     b.results.compute(state, table_);
     const AncfBeam& beam = b.results.beam();
-    const BeamSection& sec = beam.section();
     const auto& stations = b.results.stations();
     buffer_.resize(stations.size() * static_cast<std::size_t>(points));
     if (b.reference.empty())
@@ -83,6 +87,7 @@ void FatigueRecorder::record(const State& state, std::span<const double>) {
                    row(static_cast<int>(post::BeamQuantity::kMomentY)),
                    row(static_cast<int>(post::BeamQuantity::kMomentZ)));
       const double T_wall = row(static_cast<int>(post::BeamQuantity::kTensionWall));
+      const BeamSection& sec = beam.section(stations[i].element);
       std::span<double> out(buffer_.data() + i * static_cast<std::size_t>(points),
                             static_cast<std::size_t>(points));
       post::pipe_fibre_stresses(T_wall, M, tangent(beam, state, stations[i]), b.reference[i],

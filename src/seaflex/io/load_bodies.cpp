@@ -62,6 +62,241 @@ bool check_slender(MapReader& r, std::string_view key, double diameter, double l
   return false;
 }
 
+
+// the material and cross-section that a line's sections take when they do not give their
+// own: the beam's own keys (all optional when the beam has sections)
+struct SectionDefaults {
+  std::optional<double> E, rho;
+  std::optional<double> od, id, area, inertia;
+};
+
+// youngs_modulus and density, and outer_diameter/inner_diameter or area/second_moment, with
+// d's values where a key is absent; length (m) for the slenderness check (0: none)
+std::optional<BeamSection> read_cross_section(MapReader& r, const SectionDefaults& d,
+                                              double length) {
+  bool ok = true;
+  auto E = r.number("youngs_modulus", d.E ? Need::kOptional : Need::kRequired,
+                    NumberRule::positive("Pa"));
+  auto rho =
+      r.number("density", d.rho ? Need::kOptional : Need::kRequired, NumberRule::positive("kg/m^3"));
+  if (!check_material(r, E, rho)) ok = false;
+  if (!E) E = d.E;
+  if (!rho) rho = d.rho;
+  const bool has_od = r.has("outer_diameter"), has_id = r.has("inner_diameter");
+  const bool has_area = r.has("area"), has_inertia = r.has("second_moment");
+  bool pipe = has_od || has_id;
+  const bool explicit_section = has_area || has_inertia;
+  const bool inherit = !pipe && !explicit_section && (d.od || d.area);
+  if (inherit) pipe = d.od.has_value();
+  BeamSection section;
+  if (pipe && explicit_section) {
+    r.error("area",
+            "give the section either as outer_diameter/inner_diameter or as area/second_moment, "
+            "not both");
+    return std::nullopt;
+  } else if (pipe) {
+    auto od = inherit ? d.od
+                      : r.number("outer_diameter", Need::kRequired, NumberRule::positive("m"));
+    auto id = inherit ? d.id
+                      : r.number("inner_diameter", Need::kOptional, NumberRule::nonnegative("m"));
+    if (od && id && !(*id < *od)) {
+      r.error("inner_diameter",
+              fmt::format("must be smaller than outer_diameter ({:g} m), got {:g} m", *od, *id));
+      ok = false;
+    }
+    if (od && length > 0.0 && !check_slender(r, "outer_diameter", *od, length)) ok = false;
+    if (od && E && rho && ok) section = BeamSection::pipe(*od, id.value_or(0.0), *E, *rho);
+  } else {
+    const auto A =
+        inherit ? d.area : r.number("area", Need::kRequired, NumberRule::positive("m^2"));
+    const auto I = inherit ? d.inertia
+                           : r.number("second_moment", Need::kRequired, NumberRule::positive("m^4"));
+    if (A && I && E && rho) {
+      section.area = *A;
+      section.second_moment = *I;
+      section.youngs_modulus = *E;
+      section.density = *rho;
+    }
+  }
+  if (!ok || !(section.area > 0.0)) return std::nullopt;
+  return section;
+}
+
+// the beam-level keys of a line made of sections, every one optional
+std::optional<SectionDefaults> read_section_defaults(MapReader& r) {
+  SectionDefaults d;
+  d.E = r.number("youngs_modulus", Need::kOptional, NumberRule::positive("Pa"));
+  d.rho = r.number("density", Need::kOptional, NumberRule::positive("kg/m^3"));
+  if (!check_material(r, d.E, d.rho)) return std::nullopt;
+  const bool pipe = r.has("outer_diameter") || r.has("inner_diameter");
+  const bool explicit_section = r.has("area") || r.has("second_moment");
+  if (pipe && explicit_section) {
+    r.error("area",
+            "give the section either as outer_diameter/inner_diameter or as area/second_moment, "
+            "not both");
+    return std::nullopt;
+  }
+  if (pipe) {
+    d.od = r.number("outer_diameter", Need::kRequired, NumberRule::positive("m"));
+    d.id = r.number("inner_diameter", Need::kOptional, NumberRule::nonnegative("m"));
+    if (!d.od) return std::nullopt;
+  } else if (explicit_section) {
+    d.area = r.number("area", Need::kRequired, NumberRule::positive("m^2"));
+    d.inertia = r.number("second_moment", Need::kRequired, NumberRule::positive("m^4"));
+    if (!d.area || !d.inertia) return std::nullopt;
+  }
+  return d;
+}
+
+struct LineSections {
+  std::vector<BeamSection> sections;
+  std::vector<int> section_of;         // per element
+  std::vector<double> element_lengths;
+};
+
+// bodies.<name>.sections: the line's sections from its start, each with a length, a
+// target segment_length (or a number of elements) and its own cross-section and material
+// (the beam's keys are the defaults); a section's `hydrodynamics` map is kept for
+// load_beam_hydro (load_ocean.cpp)
+std::optional<LineSections> read_line_sections(MapReader& r, const std::string& name,
+                                               LoadContext& ctx) {
+  const auto defaults = read_section_defaults(r);
+  const YAML::Node list = r.get("sections");
+  if (!list.IsSequence() || list.size() == 0) {
+    r.error("sections",
+            fmt::format("expected a list of sections (- {{length: ..., segment_length: ..., "
+                        "outer_diameter: ...}}), got {}",
+                        list.IsSequence() ? "an empty list" : describe(list)));
+    return std::nullopt;
+  }
+  if (r.has("elements")) {
+    r.error("elements", "set per section (segment_length or elements) in a line made of sections");
+    return std::nullopt;
+  }
+  if (!defaults) return std::nullopt;
+  LineSections out;
+  bool ok = true;
+  long total = 0;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    MapReader sr(r.diagnostics(), list[i], fmt::format("{}[{}]", r.key_path("sections"), i));
+    if (!sr.valid()) {
+      ok = false;
+      continue;
+    }
+    sr.text("name", Need::kOptional);  // a label for the reader of the file
+    const auto length = sr.number("length", Need::kRequired, NumberRule::positive("m"));
+    const bool by_length = sr.has("segment_length"), by_count = sr.has("elements");
+    std::optional<int> n;
+    if (by_length && by_count) {
+      sr.error("elements", "give either segment_length or elements, not both");
+      ok = false;
+    } else if (by_count) {
+      n = sr.integer("elements", Need::kRequired, 1, kMaxElements);
+    } else {
+      const auto seg =
+          sr.number("segment_length", Need::kRequired, NumberRule::positive("m"));
+      // the fewest equal elements no longer than the target
+      if (seg && length) {
+        const double count = std::ceil(*length / *seg * (1.0 - 1e-12));
+        if (count > kMaxElements) {
+          sr.error("segment_length",
+                   fmt::format("{:g} m makes {:g} elements of a {:g} m section, more than the "
+                               "limit of {} per beam",
+                               *seg, count, *length, kMaxElements));
+          ok = false;
+        } else {
+          n = static_cast<int>(std::max(1.0, count));
+        }
+      }
+    }
+    const auto sec = read_cross_section(sr, *defaults, length.value_or(0.0));
+    if (const YAML::Node h = sr.get("hydrodynamics"); h.IsDefined()) {
+      if (ctx.section_hydrodynamics.find(name) == ctx.section_hydrodynamics.end())
+        // load_beam_hydro takes them; any left means the beam has no hydrodynamics entry
+        ctx.after_bodies.push_back([name](LoadContext& c) {
+          const auto it = c.section_hydrodynamics.find(name);
+          if (it == c.section_hydrodynamics.end()) return;
+          for (const auto& o : it->second)
+            c.diag.error(o.node.Mark(), o.path,
+                         fmt::format("needs an entry hydrodynamics.{} for the beam (its "
+                                     "coefficients are the sections' defaults)",
+                                     name));
+        });
+      ctx.section_hydrodynamics[name].push_back({i, h, sr.key_path("hydrodynamics")});
+    }
+    sr.finish();
+    if (!length || !n || !sec) {
+      ok = false;
+      continue;
+    }
+    total += *n;
+    if (total > kMaxElements) {
+      sr.error("", fmt::format("the sections have more than the limit of {} elements per beam",
+                               kMaxElements));
+      return std::nullopt;
+    }
+    out.sections.push_back(*sec);
+    out.element_lengths.insert(out.element_lengths.end(), *n, *length / *n);
+    out.section_of.insert(out.section_of.end(), *n, static_cast<int>(out.sections.size() - 1));
+  }
+  if (!ok) return std::nullopt;
+  return out;
+}
+
+// the first guess of a line made of sections between start and end: straight when its
+// length is the chord's (or shorter: stretched), else its catenary
+std::optional<BeamGeometry> line_geometry(MapReader& r, const Vec3& start, const Vec3& end,
+                                          const std::vector<double>& lengths, LoadContext& ctx,
+                                          bool* ok) {
+  const double L = std::accumulate(lengths.begin(), lengths.end(), 0.0);
+  const double chord = (end - start).norm();
+  if (const auto given = r.number("length", Need::kOptional, NumberRule::positive("m"));
+      given && std::abs(*given - L) > 1e-9 * L) {
+    r.error("length", fmt::format("{:g} m, but the sections add up to {:.10g} m", *given, L));
+    *ok = false;
+    return std::nullopt;
+  }
+  if (!(chord > 0.0)) {
+    r.error("end", "coincides with start: the beam needs a length greater than 0 m");
+    *ok = false;
+    return std::nullopt;
+  }
+  if (L <= chord * (1.0 + 1e-12)) {
+    if (L < 0.5 * chord) {
+      r.error("sections", fmt::format("add up to {:g} m, less than half the distance between "
+                                      "start and end ({:g} m): the line would start stretched "
+                                      "by more than 100 %",
+                                      L, chord));
+      *ok = false;
+      return std::nullopt;
+    }
+    // straight, nodes at their arc lengths scaled onto the chord
+    BeamGeometry g;
+    double s = 0.0;
+    const Vec3 t = (end - start) / chord;
+    for (std::size_t k = 0; k <= lengths.size(); ++k) {
+      g.positions.push_back(start + (s / L) * (end - start));
+      g.slopes.push_back(t);
+      if (k < lengths.size()) s += lengths[k];
+    }
+    g.positions.back() = end;
+    g.element_lengths = lengths;
+    return g;
+  }
+  std::optional<double> seabed_z;
+  if (ctx.model.seabed) {
+    const Vec3& lower = start.z() <= end.z() ? start : end;
+    seabed_z = ctx.model.seabed->at(lower.x(), lower.y()).height;
+  }
+  try {
+    return catenary_geometry(start, end, lengths, seabed_z);
+  } catch (const std::invalid_argument& e) {
+    r.error("sections", e.what());
+    *ok = false;
+    return std::nullopt;
+  }
+}
+
 std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, LoadContext& ctx) {
   bool ok = true;
   // geometry: start/end or polyline
@@ -71,7 +306,10 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
   const bool straight = has_start || has_end;
   const bool poly = r.has("polyline");
   const bool has_length = r.has("length");
-  if (poly && has_length) {
+  const bool has_sections = r.has("sections");
+  if (has_sections) {
+    // geometry from the sections, below
+  } else if (poly && has_length) {
     r.has("elements");
     r.error("length",
             "applies to start and end only: a polyline's unstretched length is its own length");
@@ -184,43 +422,36 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
     }
   }
 
-  // section: outer/inner diameter, or area and second moment
-  BeamSection section;
-  const auto E = r.number("youngs_modulus", Need::kRequired, NumberRule::positive("Pa"));
-  const auto rho = r.number("density", Need::kRequired, NumberRule::positive("kg/m^3"));
-  if (!check_material(r, E, rho)) ok = false;
-  const bool has_od = r.has("outer_diameter"), has_id = r.has("inner_diameter");
-  const bool has_area = r.has("area"), has_inertia = r.has("second_moment");
-  const bool pipe = has_od || has_id;
-  const bool explicit_section = has_area || has_inertia;
-  if (pipe && explicit_section) {
-    r.error("area",
-            "give the section either as outer_diameter/inner_diameter or as area/second_moment, "
-            "not both");
-    ok = false;
-  } else if (pipe) {
-    const auto od = r.number("outer_diameter", Need::kRequired, NumberRule::positive("m"));
-    const auto id = r.number("inner_diameter", Need::kOptional, NumberRule::nonnegative("m"));
-    if (od && id && !(*id < *od)) {
-      r.error("inner_diameter",
-              fmt::format("must be smaller than outer_diameter ({:g} m), got {:g} m", *od, *id));
+  // section: outer/inner diameter, or area and second moment, and the material; a line
+  // made of sections (`sections`) reads them per section, the beam's keys as defaults
+  std::vector<BeamSection> sections;
+  std::vector<int> section_of;
+  if (has_sections) {
+    auto line = read_line_sections(r, name, ctx);
+    if (!line) {
       ok = false;
+    } else if (!has_start || !has_end || poly) {
+      r.error("sections", "a line made of sections needs start and end (not a polyline)");
+      ok = false;
+    } else {
+      sections = std::move(line->sections);
+      section_of = std::move(line->section_of);
+      geometry.reset();
+      const auto start = r.vec3("start", Need::kRequired, "m");
+      const auto end = r.vec3("end", Need::kRequired, "m");
+      if (start && end)
+        geometry = line_geometry(r, *start, *end, line->element_lengths, ctx, &ok);
     }
-    if (od && geometry &&
-        !check_slender(r, "outer_diameter", *od,
-                       std::accumulate(geometry->element_lengths.begin(),
-                                       geometry->element_lengths.end(), 0.0)))
-      ok = false;
-    if (od && E && rho && ok) section = BeamSection::pipe(*od, id.value_or(0.0), *E, *rho);
   } else {
-    const auto A = r.number("area", Need::kRequired, NumberRule::positive("m^2"));
-    const auto I = r.number("second_moment", Need::kRequired, NumberRule::positive("m^4"));
-    if (A && I && E && rho) {
-      section.area = *A;
-      section.second_moment = *I;
-      section.youngs_modulus = *E;
-      section.density = *rho;
-    }
+    const SectionDefaults none;
+    const double total = geometry ? std::accumulate(geometry->element_lengths.begin(),
+                                                    geometry->element_lengths.end(), 0.0)
+                                  : 0.0;
+    if (auto sec = read_cross_section(r, none, total))
+      sections.push_back(*sec);
+    else
+      ok = false;
+    if (geometry) section_of.assign(geometry->element_lengths.size(), 0);
   }
 
   BeamOptions options;
@@ -254,8 +485,9 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
     ok = false;
   }
 
-  if (!ok || !geometry || !(section.area > 0.0) || !E || !rho) return nullptr;
-  return std::make_unique<AncfBeam>(name, std::move(*geometry), section, options);
+  if (!ok || !geometry || sections.empty()) return nullptr;
+  return std::make_unique<AncfBeam>(name, std::move(*geometry), std::move(sections),
+                                    std::move(section_of), options);
 }
 
 // inertia: [Ixx, Iyy, Izz] (principal) or the full symmetric 3x3 tensor, about the centre of

@@ -63,6 +63,14 @@ struct LoadContext {
   std::vector<std::pair<YAML::Mark, std::string>> output_patterns;
   /// run once every body and the hydrodynamics section are read (seabed contact)
   std::vector<std::function<void(LoadContext&)>> after_bodies;
+  /// the `hydrodynamics` maps of a line's sections (beam name -> section index, node, key
+  /// path), read with the beam's hydrodynamics entry (load_ocean.cpp)
+  struct SectionHydrodynamics {
+    std::size_t section;
+    YAML::Node node;
+    std::string path;
+  };
+  std::map<std::string, std::vector<SectionHydrodynamics>> section_hydrodynamics;
 
   /// Reads the body name at key: a body of the model, or ground (nullptr with *ground set)
   /// when allow_ground. Reports a dangling reference with a suggestion.
@@ -113,6 +121,11 @@ std::optional<TimeSignal> read_time_factor(MapReader& reader);
 std::unique_ptr<Body> build_ancf_plate(MapReader& reader, const std::string& name, LoadContext&);
 std::unique_ptr<Force> build_plate_pressure(MapReader& reader, const std::string& name,
                                             LoadContext& ctx);
+/// Attachments on a line (load_attachments.cpp): a clump weight or point buoy, and
+/// buoyancy modules over a range of arc length.
+std::unique_ptr<Force> build_clump(MapReader& reader, const std::string& name, LoadContext& ctx);
+std::unique_ptr<Force> build_buoyancy_modules(MapReader& reader, const std::string& name,
+                                              LoadContext& ctx);
 /// The plate named by the `body` key of a support, or nullptr (without reporting) when
 /// the body is not a plate; *skip is set when the body failed to build and the support
 /// is written for a plate (it is then not checked).

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "seaflex/io/load_context.hpp"
 
@@ -12,6 +13,13 @@ namespace seaflex::io {
 namespace {
 
 constexpr double kInf = NumberRule::kInf;
+
+// every section of the beam is a pipe (outer and inner diameter given)
+bool is_pipe(const AncfBeam& beam) {
+  for (const auto& sec : beam.sections())
+    if (!(sec.outer_diameter > 0.0)) return false;
+  return true;
+}
 
 // the list at `beams` (every pipe beam when absent): each an ANCF beam with a pipe section
 std::vector<std::string> read_pipe_beams(MapReader& r, LoadContext& ctx) {
@@ -23,7 +31,7 @@ std::vector<std::string> read_pipe_beams(MapReader& r, LoadContext& ctx) {
   if (!n.IsDefined()) {
     for (const auto& name : beams) {
       const auto* beam = dynamic_cast<const AncfBeam*>(ctx.system.find_body(name));
-      if (beam->section().outer_diameter > 0.0) out.push_back(name);
+      if (is_pipe(*beam)) out.push_back(name);
     }
     if (out.empty())
       r.error("beams",
@@ -56,7 +64,7 @@ std::vector<std::string> read_pipe_beams(MapReader& r, LoadContext& ctx) {
       ctx.diag.error(n[i].Mark(), path,
                      fmt::format("body '{}' is a {}; only ancf_beam bodies are accepted here", name,
                                  body->kind()));
-    else if (!(beam->section().outer_diameter > 0.0))
+    else if (!is_pipe(*beam))
       ctx.diag.error(n[i].Mark(), path,
                      fmt::format("beam '{}' has no pipe section: give outer_diameter and "
                                  "inner_diameter (stresses need the wall)",
@@ -162,8 +170,9 @@ void load_code_check(const YAML::Node& node, LoadContext& ctx) {
   c.smys = *smys;
   c.smts = *smts;
   for (const auto& name : c.beams) {
-    const auto& sec = dynamic_cast<const AncfBeam*>(ctx.system.find_body(name))->section();
-    const double wall = 0.5 * (sec.outer_diameter - sec.inner_diameter);
+    double wall = std::numeric_limits<double>::infinity();
+    for (const auto& sec : dynamic_cast<const AncfBeam*>(ctx.system.find_body(name))->sections())
+      wall = std::min(wall, 0.5 * (sec.outer_diameter - sec.inner_diameter));
     if (c.corrosion + c.fabrication >= wall)
       r.error("corrosion_allowance",
               fmt::format("corrosion allowance and fabrication tolerance ({:g} m) leave no wall "

@@ -158,6 +158,8 @@ const std::map<std::string, ForceBuilder>& load_builders() {
       {"point_force", build_point_force},
       {"distributed_load", build_distributed_load},
       {"plate_pressure", build_plate_pressure},
+      {"clump", build_clump},
+      {"buoyancy_modules", build_buoyancy_modules},
   };
   return builders;
 }

@@ -165,22 +165,31 @@ std::tuple<double, double, double, double> read_morison_coefficients(MapReader& 
   return {cd, cd_axial, cm, ca};
 }
 
-void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
-  MorisonBeamCoefficients c;
-  const double od = beam.section().outer_diameter;
-  c.diameter =
-      r.number("diameter", od > 0.0 ? Need::kOptional : Need::kRequired, NumberRule::positive("m"))
-          .value_or(od);
-  if (c.diameter > beam.length() && !(od > beam.length()))  // od: reported at the body
+// one set of a beam's (or one of its sections') Morison coefficients; d holds the defaults
+// (the beam's entry for a section's, whose diameter and contents diameter are already the
+// section's), od the section's outer diameter
+MorisonBeamCoefficients read_beam_coefficients(MapReader& r, const MorisonBeamCoefficients& d,
+                                               bool section, double od, double length) {
+  MorisonBeamCoefficients c = d;
+  c.diameter = r.number("diameter", d.diameter > 0.0 ? Need::kOptional : Need::kRequired,
+                        NumberRule::positive("m"))
+                   .value_or(d.diameter);
+  if (c.diameter > length && !(od > length))  // od: reported at the body
     r.error("diameter",
             fmt::format("{:g} m is more than the beam's length ({:g} m): a beam is much longer "
                         "than its diameter; seaflex uses m, not mm ({:g} mm = {:g} m)",
-                        c.diameter, beam.length(), c.diameter, c.diameter / 1000.0));
-  std::tie(c.cd, c.cd_axial, c.cm, c.ca) = read_morison_coefficients(r);
+                        c.diameter, length, c.diameter, c.diameter / 1000.0));
+  const NumberRule rule = NumberRule::range(0.0, 10.0, "");
+  c.cd = r.number("cd", Need::kOptional, rule).value_or(d.cd);
+  c.cd_axial = r.number("cd_axial", Need::kOptional, rule).value_or(d.cd_axial);
+  const auto cm = r.number("cm", Need::kOptional, rule);
+  c.cm = cm.value_or(d.cm);
+  // ca defaults to max(0, cm - 1) (of this entry's cm when it gives one)
+  c.ca = r.number("ca", Need::kOptional, rule)
+             .value_or(cm || !section ? std::max(0.0, c.cm - 1.0) : d.ca);
   // axial: added mass ca_axial (default 0) and inertia cm_axial, by default the Froude-Krylov
   // 1 plus ca_axial when the beam has a water inertia at all (cm > 0), as cm = 1 + ca
-  const NumberRule rule = NumberRule::range(0.0, 10.0, "");
-  c.ca_axial = r.number("ca_axial", Need::kOptional, rule).value_or(0.0);
+  c.ca_axial = r.number("ca_axial", Need::kOptional, rule).value_or(d.ca_axial);
   c.cm_axial =
       r.number("cm_axial", Need::kOptional, rule).value_or(c.ca_axial + (c.cm > 0.0 ? 1.0 : 0.0));
   if (r.has("buoyancy"))
@@ -188,18 +197,56 @@ void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
         r.choice("buoyancy", Need::kRequired, {"true", "false"}).value_or("true") == "true";
   c.internal_density =
       r.number("contents_density", Need::kOptional, NumberRule::nonnegative("kg/m^3"))
-          .value_or(0.0);
-  const double id = beam.section().inner_diameter;
-  c.internal_diameter =
-      r.number("contents_diameter", Need::kOptional, NumberRule::positive("m")).value_or(id);
+          .value_or(d.internal_density);
+  c.internal_diameter = r.number("contents_diameter", Need::kOptional, NumberRule::positive("m"))
+                            .value_or(d.internal_diameter);
   if (c.internal_density > 0.0 && !(c.internal_diameter > 0.0))
     r.error("contents_diameter",
             "required when contents_density is given and the beam has no "
             "inner_diameter");
-  c.gauss_points = r.integer("gauss_points", Need::kOptional, 1, 20).value_or(5);
+  if (!section) c.gauss_points = r.integer("gauss_points", Need::kOptional, 1, 20).value_or(5);
+  return c;
+}
+
+void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
+  const BeamSection& first = beam.section(0);
+  MorisonBeamCoefficients defaults;
+  defaults.diameter = first.outer_diameter;
+  defaults.internal_diameter = first.inner_diameter;
+  const bool gave_diameter = r.has("diameter"), gave_contents = r.has("contents_diameter");
+  const MorisonBeamCoefficients beam_c =
+      read_beam_coefficients(r, defaults, false, first.outer_diameter, beam.length());
+  // a line made of sections: each section takes the beam's entry, with its own diameters
+  // unless the entry gives them, and its own `hydrodynamics` map over that
+  std::vector<MorisonBeamCoefficients> per_section;
+  const auto overrides = ctx.section_hydrodynamics.find(beam.name());
+  for (std::size_t i = 0; i < beam.sections().size(); ++i) {
+    const BeamSection& sec = beam.sections()[i];
+    MorisonBeamCoefficients c = beam_c;
+    if (!gave_diameter) c.diameter = sec.outer_diameter;
+    if (!gave_contents) c.internal_diameter = sec.inner_diameter;
+    bool own = false;
+    if (overrides != ctx.section_hydrodynamics.end())
+      for (const auto& o : overrides->second)
+        if (o.section == i) {
+          MapReader sr(ctx.diag, o.node, o.path);
+          if (sr.valid()) c = read_beam_coefficients(sr, c, true, sec.outer_diameter, beam.length());
+          sr.finish();
+          own = true;
+        }
+    if (!own && !(c.diameter > 0.0) && i > 0)
+      r.error("diameter", fmt::format("required: section {} of beam '{}' has no outer_diameter",
+                                      i, beam.name()));
+    if (!own && c.internal_density > 0.0 && !(c.internal_diameter > 0.0) && i > 0)
+      r.error("contents_diameter",
+              fmt::format("required: section {} of beam '{}' has no inner_diameter", i,
+                          beam.name()));
+    per_section.push_back(c);
+  }
   r.finish();
+  if (overrides != ctx.section_hydrodynamics.end()) ctx.section_hydrodynamics.erase(overrides);
   ctx.system.add_force(std::make_unique<MorisonBeam>(fmt::format("{}.morison", beam.name()), beam,
-                                                     c, ctx.model.ocean));
+                                                     std::move(per_section), ctx.model.ocean));
 }
 
 std::optional<Vec3> read_point(MapReader& r, std::string_view key, Need need) {

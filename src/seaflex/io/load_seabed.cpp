@@ -4,6 +4,7 @@
 // Format: docs/model-format.md section 4.4.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -185,13 +186,19 @@ void load_seabed(MapReader& env, LoadContext& ctx) {
       if (!beam ||
           (!lines.empty() && std::find(lines.begin(), lines.end(), beam->name()) == lines.end()))
         continue;
-      // the contact width: the outer diameter, or else the Morison diameter
-      double width = beam->section().outer_diameter;
-      if (!(width > 0.0))
-        for (const auto& f : c.system.forces())
-          if (const auto* m = dynamic_cast<const MorisonBeam*>(f.get()); m && &m->beam() == beam)
-            width = m->coefficients().diameter;
-      if (!(width > 0.0)) {
+      // the contact width of each section: its outer diameter, or else its Morison diameter
+      const MorisonBeam* morison = nullptr;
+      for (const auto& f : c.system.forces())
+        if (const auto* m = dynamic_cast<const MorisonBeam*>(f.get()); m && &m->beam() == beam)
+          morison = m;
+      std::vector<double> widths, masses;
+      for (std::size_t i = 0; i < beam->sections().size(); ++i) {
+        double width = beam->sections()[i].outer_diameter;
+        if (!(width > 0.0) && morison) width = morison->coefficients(static_cast<int>(i)).diameter;
+        widths.push_back(width);
+        masses.push_back(beam->sections()[i].mass_per_length());
+      }
+      if (!(*std::min_element(widths.begin(), widths.end()) > 0.0)) {
         c.diag.error(mark, path,
                      fmt::format("line '{}' has no contact width: give bodies.{}.outer_diameter "
                                  "or a Morison diameter in hydrodynamics.{}, or leave it out of "
@@ -200,8 +207,7 @@ void load_seabed(MapReader& env, LoadContext& ctx) {
         continue;
       }
       c.system.add_force(std::make_unique<SeabedContact>(fmt::format("{}.seabed", beam->name()),
-                                                         *beam, seabed, p, width,
-                                                         beam->section().mass_per_length()));
+                                                         *beam, seabed, p, widths, masses));
     }
   });
 }

@@ -200,7 +200,7 @@ Model load(const YAML::Node& root, const std::string& name) {
   Model model;
   model.file = name;
   model.system = std::make_unique<System>();
-  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  LoadContext ctx{diag, *model.system, model, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
 
   MapReader top(diag, root, "");
   if (!top.valid()) diag.throw_if_any();

@@ -115,24 +115,28 @@ std::optional<VtkSea> sea_surface(const Model& model) {
   return sea;
 }
 
-post::PipePressure pipe_pressure(const Model& model, const AncfBeam& beam) {
-  post::PipePressure p;
-  p.gravity = model.gravity.norm();
+std::vector<post::PipePressure> pipe_pressure(const Model& model, const AncfBeam& beam) {
+  post::PipePressure none;
+  none.gravity = model.gravity.norm();
+  std::vector<post::PipePressure> out(beam.sections().size(), none);
   // the loader names a beam's Morison loads "<beam>.morison" (load_ocean.cpp)
   const std::string name = fmt::format("{}.morison", beam.name());
   for (const auto& f : model.system->forces()) {
     const auto* morison = dynamic_cast<const MorisonBeam*>(f.get());
     if (!morison || morison->name() != name) continue;
-    const MorisonBeamCoefficients& c = morison->coefficients();
-    if (model.ocean) p.gravity = model.ocean->g();  // as the contents' weight
-    if (c.buoyancy && model.ocean) {
-      p.water_density = model.ocean->rho();
-      p.external_diameter = c.diameter;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const MorisonBeamCoefficients& c = morison->coefficients(static_cast<int>(i));
+      post::PipePressure& p = out[i];
+      if (model.ocean) p.gravity = model.ocean->g();  // as the contents' weight
+      if (c.buoyancy && model.ocean) {
+        p.water_density = model.ocean->rho();
+        p.external_diameter = c.diameter;
+      }
+      p.contents_density = c.internal_density;
+      p.contents_diameter = c.internal_diameter;
     }
-    p.contents_density = c.internal_density;
-    p.contents_diameter = c.internal_diameter;
   }
-  return p;
+  return out;
 }
 
 }  // namespace seaflex::io

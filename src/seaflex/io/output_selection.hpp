@@ -35,9 +35,10 @@ std::vector<const RigidBody*> output_rigid_bodies(const Model& model);
 /// 10 m); none when the model has no water.
 std::optional<VtkSea> sea_surface(const Model& model);
 
-/// The pressures on a beam's section from its Morison entry (hydrodynamics.<beam>):
+/// The pressures on each of a beam's sections (one per beam.sections()) from its Morison
+/// entry (hydrodynamics.<beam>):
 /// water density and buoyancy diameter (when buoyancy is on), contents density and
 /// diameter; zero for a beam the water does not act on.
-post::PipePressure pipe_pressure(const Model& model, const AncfBeam& beam);
+std::vector<post::PipePressure> pipe_pressure(const Model& model, const AncfBeam& beam);
 
 }  // namespace seaflex::io

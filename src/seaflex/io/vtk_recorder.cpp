@@ -104,7 +104,8 @@ VtkRecorder::VtkRecorder(const std::filesystem::path& dir, const std::string& st
   if (ec)
     throw std::runtime_error(fmt::format("cannot create {}: {}", vtk_dir_.string(), ec.message()));
   for (const auto& b : beams_) {
-    const BeamSection& s = b.beam().section();
+    // one tube diameter per beam: its first section's
+    const BeamSection& s = b.beam().section(0);
     const double d = b.pressure().external_diameter > 0.0 ? b.pressure().external_diameter
                      : s.outer_diameter > 0.0             ? s.outer_diameter
                                               : std::sqrt(4.0 * s.area / std::numbers::pi);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "seaflex/math/gauss_legendre.hpp"
 
@@ -37,7 +38,14 @@ const std::array<BeamQuantityInfo, kBeamQuantityCount>& beam_quantities() {
 }
 
 BeamResults::BeamResults(const AncfBeam& beam, PipePressure pressure, int gauss_points)
-    : beam_(beam), pressure_(pressure) {
+    : BeamResults(beam, std::vector<PipePressure>(beam.sections().size(), pressure),
+                  gauss_points) {}
+
+BeamResults::BeamResults(const AncfBeam& beam, std::vector<PipePressure> pressures,
+                         int gauss_points)
+    : beam_(beam), pressures_(std::move(pressures)) {
+  if (pressures_.size() != beam.sections().size())
+    throw std::invalid_argument("BeamResults: one pipe pressure per beam section needed");
   const math::QuadratureRule rule =
       gauss_points > 0 ? math::gauss_legendre_unit(gauss_points) : math::QuadratureRule{};
   const int n = beam.num_elements();
@@ -64,35 +72,40 @@ BeamResults::Point BeamResults::evaluate(const State& state, int element, double
     p.eps = 0.5 * (p.rp.squaredNorm() - 1.0);  // thesis eq. (12)
   }
   // the curvature of the beam's bending model: the moment the model carries
-  p.m = beam_.section().EI() * beam_.elasticity(element).curvature_vector(e, xi);
+  const BeamSection& sec = beam_.section(element);
+  p.m = sec.EI() * beam_.elasticity(element).curvature_vector(e, xi);
+  p.t_eff = sec.EA() * p.eps * p.rp.norm();
   return p;
 }
 
 void BeamResults::compute(const State& state, MatX& out) const {
   out.resize(num_stations(), kBeamQuantityCount);
-  const BeamSection& sec = beam_.section();
-  const double EA = sec.EA(), EI = sec.EI();
-  const double A_e = 0.25 * kPi * pressure_.external_diameter * pressure_.external_diameter;
-  const double A_i = 0.25 * kPi * pressure_.contents_diameter * pressure_.contents_diameter;
   // free surface of the contents: the beam's highest node
   double z_top = -std::numeric_limits<double>::infinity();
   for (int k = 0; k < beam_.num_nodes(); ++k)
     z_top = std::max(z_top, state.q[beam_.node_index(k) + 2]);
-  const bool pipe = sec.outer_diameter > 0.0;
-  const double ro = 0.5 * sec.outer_diameter, ri = 0.5 * sec.inner_diameter;
   const int n = beam_.num_elements();
   for (Index i = 0; i < num_stations(); ++i) {
     const BeamStation& st = stations_[static_cast<std::size_t>(i)];
+    // a node between two sections takes the section of the element after it
+    const BeamSection& sec = beam_.section(st.element);
+    const PipePressure& pressure = pressures_[beam_.section_index(st.element)];
+    const double EI = sec.EI();
+    const double A_e = 0.25 * kPi * pressure.external_diameter * pressure.external_diameter;
+    const double A_i = 0.25 * kPi * pressure.contents_diameter * pressure.contents_diameter;
+    const bool pipe = sec.outer_diameter > 0.0;
+    const double ro = 0.5 * sec.outer_diameter, ri = 0.5 * sec.inner_diameter;
     Point p = evaluate(state, st.element, st.xi);
     if (st.node > 0 && st.node < n) {  // interior node: mean of the two elements
       const Point left = evaluate(state, st.node - 1, 1.0);
       p.eps = 0.5 * (p.eps + left.eps);
       p.m = 0.5 * (p.m + left.m);
+      p.t_eff = 0.5 * (p.t_eff + left.t_eff);
     }
     const double z = p.r.z();
-    const double p_e = pressure_.water_density * pressure_.gravity * std::max(0.0, -z);
-    const double p_i = pressure_.contents_density * pressure_.gravity * (z_top - z);
-    const double T_eff = EA * p.eps * p.rp.norm();
+    const double p_e = pressure.water_density * pressure.gravity * std::max(0.0, -z);
+    const double p_i = pressure.contents_density * pressure.gravity * (z_top - z);
+    const double T_eff = p.t_eff;
     const double T_wall = T_eff + p_i * A_i - p_e * A_e;  // DNV-OS-F201 effective tension
     const double M = p.m.norm();
     auto row = out.row(i);

@@ -97,9 +97,13 @@ class BeamResults {
  public:
   /// gauss_points: stations per element between the nodes (>= 0).
   BeamResults(const AncfBeam& beam, PipePressure pressure, int gauss_points = 2);
+  /// A line made of sections: pressures[i] for the beam's section i (one per
+  /// beam.sections()).
+  BeamResults(const AncfBeam& beam, std::vector<PipePressure> pressures, int gauss_points = 2);
 
   const AncfBeam& beam() const { return beam_; }
-  const PipePressure& pressure() const { return pressure_; }
+  /// The pressures of the beam's section i.
+  const PipePressure& pressure(int section = 0) const { return pressures_[section]; }
   const std::vector<BeamStation>& stations() const { return stations_; }
   Index num_stations() const { return static_cast<Index>(stations_.size()); }
 
@@ -111,11 +115,12 @@ class BeamResults {
   struct Point {
     Vec3 r, rp, m;  // position, slope, moment vector
     double eps = 0.0;
+    double t_eff = 0.0;  // EA eps |r'|, the effective tension
   };
   Point evaluate(const State& state, int element, double xi) const;
 
   const AncfBeam& beam_;
-  PipePressure pressure_;
+  std::vector<PipePressure> pressures_;  // per beam section
   std::vector<BeamStation> stations_;
 };
 
