@@ -155,8 +155,9 @@ std::optional<PointEntry> read_point_entry(Diagnostics& diag, const YAML::Node& 
     r.error("stiffness", "give either area (m^2 per point) or stiffness (N/m per point), not both");
     ok = false;
   } else if (!has_area && !has_stiffness) {
-    r.error("", "give area (m^2 per point: k = normal_stiffness x area) or stiffness (N/m per "
-                "point)");
+    r.error("",
+            "give area (m^2 per point: k = normal_stiffness x area) or stiffness (N/m per "
+            "point)");
     ok = false;
   } else {
     e.by_area = has_area;
