@@ -133,10 +133,12 @@ std::optional<PointEntry> read_point_entry(Diagnostics& diag, const YAML::Node& 
   bool ok = r.get("body", Need::kRequired).IsDefined();
   const YAML::Node pts = r.get("points", Need::kRequired);
   if (pts.IsDefined()) {
-    if (!pts.IsSequence() || pts.size() == 0) {
+    if (!pts.IsSequence() || pts.size() == 0 || pts[0].IsScalar()) {
       r.error("points", fmt::format("expected a list of points [x, y, z] (m, body axes from the "
-                                    "centre of gravity), got {}",
-                                    describe(pts)));
+                                    "centre of gravity; one point is [[x, y, z]]), got {}",
+                                    !pts.IsSequence() ? describe(pts)
+                                    : pts.size() == 0 ? std::string("an empty list")
+                                                      : std::string("a list of numbers")));
       ok = false;
     } else {
       for (std::size_t i = 0; i < pts.size(); ++i) {
