@@ -7,6 +7,11 @@
 
 namespace seaflex {
 
+namespace {
+using Mat7 = Eigen::Matrix<double, 7, 7>;
+using Mat37 = Eigen::Matrix<double, 3, 7>;
+}  // namespace
+
 RigidBodySeabedContact::RigidBodySeabedContact(std::string name, const RigidBody& body,
                                                std::shared_ptr<const hydro::Seabed> seabed,
                                                std::vector<SeabedContactPoint> points,
@@ -69,7 +74,8 @@ void RigidBodySeabedContact::assemble(const State& state, double, AssemblyTarget
   const MatrixScales& sc = target.scales;
   const bool want_matrix = target.matrix != nullptr && (sc.kq != 0.0 || sc.kv != 0.0);
   const Index o = body_.offset();
-  MatX A = MatX::Zero(7, 7);
+  // fixed-size scratch: no allocation per evaluation
+  Mat7 A = Mat7::Zero();
   bool touched = false;
   MarkerVectorEval ev;
   for (int i = 0; i < num_points(); ++i) {
@@ -78,11 +84,11 @@ void RigidBodySeabedContact::assemble(const State& state, double, AssemblyTarget
     const Vec3 f = e.f.normal + e.f.friction;
     if (f.isZero(0.0) && e.df_dx.isZero(0.0) && e.df_dxd.isZero(0.0)) continue;
     touched = true;
-    const Eigen::Matrix<double, 3, 7> J = ev.J;
+    const Mat37 J = ev.J;
     if (target.forces) target.forces->segment<7>(o) += J.transpose() * f;  // Q = J^T f
     if (!want_matrix) continue;
     if (sc.kq != 0.0) {
-      MatX dQ = J.transpose() * (e.df_dx * J + e.df_dxd * Eigen::Matrix<double, 3, 7>(ev.Jv));
+      Mat7 dQ = J.transpose() * (e.df_dx * J + e.df_dxd * Mat37(ev.Jv));
       markers_[i].add_hessian(MarkerVector::kPoint, state, f, dQ);  // d(J^T f)/dq, f held
       A -= sc.kq * dQ;
     }
