@@ -1,9 +1,10 @@
 // Seabed contact of rigid-body points (forces/rigid_body_seabed_contact.hpp): the exact
 // tangents dQ/dq and dQ/dv of a tilted, turning and sliding box whose corners are partly
-// below a flat, a sloped and a grid seabed, against central differences of Q; and the
-// force at one point against the law written out by hand.
+// below a flat, a sloped and a grid seabed, against central differences of Q; the force at
+// one point against the law written out by hand; the loader of environment.seabed.points.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -11,6 +12,7 @@
 #include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/forces/rigid_body_seabed_contact.hpp"
 #include "seaflex/hydro/seabed.hpp"
+#include "seaflex/io/model_loader.hpp"
 #include "seaflex/math/rotation.hpp"
 #include "seaflex/system/system.hpp"
 
@@ -187,4 +189,62 @@ TEST(RigidBodySeabedContact, OnePointFollowsTheLaw) {
   EXPECT_EQ(contact.point_force(up, 0).normal, Vec3::Zero());
   EXPECT_EQ(contact.potential_energy(up), 0.0);
   EXPECT_NEAR(contact.potential_energy(s), 0.5 * k * d * d, 1e-12 * k * d * d);
+}
+
+namespace {
+
+const RigidBodySeabedContact* contact_of(const io::Model& m, const std::string& name) {
+  for (const auto& f : m.system->forces())
+    if (const auto* c = dynamic_cast<const RigidBodySeabedContact*>(f.get());
+        c && c->name() == name)
+      return c;
+  ADD_FAILURE() << "no force " << name;
+  return nullptr;
+}
+
+}  // namespace
+
+// environment.seabed.points as documented (docs/model-format.md 4.5): k = normal_stiffness x
+// area or the stiffness given, the points in the order given, the entry's friction or else
+// the seabed's, the seabed's damping and slip velocity, c_i = 2 zeta k_i sqrt(m/K) (exact
+// arithmetic: 1e-12 relative); the channels' names.
+TEST(RigidBodySeabedContact, LoaderReadsThePoints) {
+  const io::Model m = io::load_model_text(R"(
+environment:
+  water: {density: 1025, depth: 100}
+  seabed:
+    normal_stiffness: 2.0e5
+    damping: 0.25
+    friction: 0.4
+    slip_velocity: 0.02
+    points:
+      - {body: clump, points: [[1, 0, -0.5], [-1, 0, -0.5], [0, 1, -0.5]], area: 1.5}
+      - {body: anchor, points: [[0, 0, -1]], stiffness: 7.0e6, friction: 1.2}
+bodies:
+  clump: {type: rigid_body, mass: 8000, inertia: [1000, 1000, 1500], position: [0, 0, -99]}
+  anchor: {type: rigid_body, mass: 3000, inertia: [500, 500, 500], position: [20, 0, -98]}
+)",
+                                          "points.yaml");
+  const auto* clump = contact_of(m, "clump.seabed");
+  const auto* anchor = contact_of(m, "anchor.seabed");
+  ASSERT_TRUE(clump && anchor);
+  ASSERT_EQ(clump->num_points(), 3);
+  EXPECT_EQ(clump->points()[1].position, Vec3(-1, 0, -0.5));
+  for (const auto& p : clump->points()) EXPECT_NEAR(p.stiffness, 3e5, 1e-12 * 3e5);
+  EXPECT_EQ(clump->properties().friction, 0.4);
+  EXPECT_EQ(clump->properties().damping, 0.25);
+  EXPECT_EQ(clump->properties().slip_velocity, 0.02);
+  const double c = 2 * 0.25 * 3e5 * std::sqrt(8000 / 9e5);
+  EXPECT_NEAR(clump->damping_coefficient(2), c, 1e-12 * c);
+  ASSERT_EQ(anchor->num_points(), 1);
+  EXPECT_EQ(anchor->points()[0].stiffness, 7e6);
+  EXPECT_EQ(anchor->properties().friction, 1.2);
+  const double ca = 2 * 0.25 * std::sqrt(7e6 * 3000);
+  EXPECT_NEAR(anchor->damping_coefficient(0), ca, 1e-12 * ca);
+  std::vector<std::string> names;
+  for (const auto& ch : io::model_channels(m)) names.push_back(ch.name);
+  for (const char* n : {"clump.seabed.force", "clump.seabed.friction", "clump.seabed.p0.force",
+                        "clump.seabed.p2.force", "anchor.seabed.p0.force"})
+    EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
+  EXPECT_EQ(std::find(names.begin(), names.end(), "clump.seabed.p3.force"), names.end());
 }

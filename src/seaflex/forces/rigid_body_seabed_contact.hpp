@@ -77,6 +77,8 @@ class RigidBodySeabedContact : public Force {
   const RigidBody& body() const { return body_; }
   /// c of point i (N s/m).
   double damping_coefficient(int i) const { return c_[i]; }
+  const std::vector<SeabedContactPoint>& points() const { return points_; }
+  const PointContactProperties& properties() const { return properties_; }
 
  private:
   struct Eval {
