@@ -1,7 +1,8 @@
 // environment.seabed: the seabed's shape (flat at the water depth, a sloped plane, or a
 // bathymetry grid from a file) and its contact properties; every ANCF beam (or the ones
-// listed in `lines`) then touches it along its length (forces/seabed_contact.hpp).
-// Format: docs/model-format.md section 4.4.
+// listed in `lines`) then touches it along its length (forces/seabed_contact.hpp), and the
+// rigid-body points listed in `points` touch it too (forces/rigid_body_seabed_contact.hpp).
+// Format: docs/model-format.md section 4.5.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "seaflex/core/errors.hpp"
 #include "seaflex/core/input_file.hpp"
 #include "seaflex/forces/morison_beam.hpp"
+#include "seaflex/forces/rigid_body_seabed_contact.hpp"
 #include "seaflex/forces/seabed_contact.hpp"
 #include "seaflex/io/load_context.hpp"
 
@@ -111,6 +113,73 @@ std::shared_ptr<const hydro::Seabed> read_grid(MapReader& r, const LoadContext& 
                           std::vector<double>(ys.begin(), ys.end()), std::move(depths)));
 }
 
+// one entry of environment.seabed.points: {body, points, area | stiffness, friction}; the
+// body is checked once the bodies are read
+struct PointEntry {
+  YAML::Node node;
+  std::string path;
+  std::vector<Vec3> points;
+  double stiffness = 0.0;  // per point (N/m), or the area (m^2) when by_area
+  bool by_area = false;
+  std::optional<double> friction;
+};
+
+std::optional<PointEntry> read_point_entry(Diagnostics& diag, const YAML::Node& node,
+                                           const std::string& path) {
+  MapReader r(diag, node, path);
+  if (!r.valid()) return std::nullopt;
+  PointEntry e;
+  e.node = node;
+  e.path = path;
+  bool ok = r.get("body", Need::kRequired).IsDefined();
+  const YAML::Node pts = r.get("points", Need::kRequired);
+  if (pts.IsDefined()) {
+    if (!pts.IsSequence() || pts.size() == 0 || pts[0].IsScalar()) {
+      r.error("points", fmt::format("expected a list of points [x, y, z] (m, body axes from the "
+                                    "centre of gravity; one point is [[x, y, z]]), got {}",
+                                    !pts.IsSequence() ? describe(pts)
+                                    : pts.size() == 0 ? std::string("an empty list")
+                                                      : std::string("a list of numbers")));
+      ok = false;
+    } else {
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        const auto v = read_vec3(diag, pts[i], fmt::format("{}.points[{}]", path, i), "m");
+        if (v)
+          e.points.push_back(*v);
+        else
+          ok = false;
+      }
+    }
+  } else {
+    ok = false;
+  }
+  const bool has_area = r.has("area"), has_stiffness = r.has("stiffness");
+  if (has_area && has_stiffness) {
+    r.error("stiffness", "give either area (m^2 per point) or stiffness (N/m per point), not both");
+    ok = false;
+  } else if (!has_area && !has_stiffness) {
+    r.error("",
+            "give area (m^2 per point: k = normal_stiffness x area) or stiffness (N/m per "
+            "point)");
+    ok = false;
+  } else {
+    e.by_area = has_area;
+    const auto v = has_area ? r.number("area", Need::kRequired, NumberRule::positive("m^2"))
+                            : r.number("stiffness", Need::kRequired, NumberRule::positive("N/m"));
+    if (v)
+      e.stiffness = *v;
+    else
+      ok = false;
+  }
+  if (r.has("friction")) {
+    e.friction = r.number("friction", Need::kRequired, NumberRule::range(0.0, 10.0, ""));
+    if (!e.friction) ok = false;
+  }
+  r.finish();
+  if (!ok) return std::nullopt;
+  return e;
+}
+
 }  // namespace
 
 void load_seabed(MapReader& env, LoadContext& ctx) {
@@ -166,12 +235,70 @@ void load_seabed(MapReader& env, LoadContext& ctx) {
       for (const auto& e : l) lines.push_back(e.Scalar());
     }
   }
+  std::vector<PointEntry> entries;
+  bool points_ok = true;
+  if (const YAML::Node l = r.get("points"); l.IsDefined()) {
+    if (!l.IsSequence()) {
+      r.error("points", "expected a list of {body, points, area or stiffness} entries");
+      points_ok = false;
+    } else {
+      for (std::size_t i = 0; i < l.size(); ++i) {
+        const std::string at = fmt::format("{}[{}]", r.key_path("points"), i);
+        auto e = read_point_entry(ctx.diag, l[i], at);
+        if (!e) {
+          points_ok = false;
+          continue;
+        }
+        // a point has no line axis: one coefficient, the seabed's when it gives one
+        if (!e->friction && p.friction_axial != p.friction_lateral) {
+          ctx.diag.error(l[i].Mark(), at,
+                         fmt::format("the seabed's friction differs along and across lines "
+                                     "(axial {:g}, lateral {:g}): give these points their own "
+                                     "friction (one coefficient)",
+                                     p.friction_axial, p.friction_lateral));
+          points_ok = false;
+          continue;
+        }
+        entries.push_back(std::move(*e));
+      }
+    }
+  }
   const YAML::Mark mark = r.mark();
   const std::string path = r.path();
   r.finish();
-  if (!seabed || !k || !lines_ok) return;
+  if (!seabed || !k || !lines_ok || !points_ok) return;
   p.normal_stiffness = *k;
   ctx.model.seabed = seabed;
+  if (!entries.empty())
+    ctx.after_bodies.push_back([seabed, p, entries](LoadContext& c) {
+      std::set<std::string> seen;
+      for (const auto& e : entries) {
+        MapReader r(c.diag, e.node, e.path);
+        const Body* body = c.body_ref(r, "body", false, nullptr);
+        if (!body) continue;
+        const auto* rigid = dynamic_cast<const RigidBody*>(body);
+        if (!rigid) {
+          r.error("body", fmt::format("'{}' is an {}, not a rigid body: beams touch the seabed "
+                                      "along their length (environment.seabed.lines)",
+                                      body->name(), body->kind()));
+          continue;
+        }
+        if (!seen.insert(rigid->name()).second) {
+          r.error("body", fmt::format("'{}' is listed twice: give all its points in one entry",
+                                      rigid->name()));
+          continue;
+        }
+        std::vector<SeabedContactPoint> points;
+        const double k_point = e.by_area ? p.normal_stiffness * e.stiffness : e.stiffness;
+        for (const auto& u : e.points) points.push_back({u, k_point});
+        PointContactProperties pp;
+        pp.damping = p.damping;
+        pp.friction = e.friction.value_or(p.friction_lateral);
+        pp.slip_velocity = p.slip_velocity;
+        c.system.add_force(std::make_unique<RigidBodySeabedContact>(
+            fmt::format("{}.seabed", rigid->name()), *rigid, seabed, std::move(points), pp));
+      }
+    });
   // the lines touch it once every body and its hydrodynamics are known
   ctx.after_bodies.push_back([seabed, p, lines, mark, path](LoadContext& c) {
     std::vector<std::string> beams;
