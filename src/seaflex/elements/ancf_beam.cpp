@@ -103,6 +103,13 @@ AncfBeam::AncfBeam(std::string name, BeamGeometry geometry, std::vector<BeamSect
   coloring_ = ElementColoring(color);
 }
 
+void AncfBeam::set_initial_shape(std::vector<Vec3> positions, std::vector<Vec3> slopes) {
+  if (positions.size() != geometry_.positions.size() || slopes.size() != geometry_.slopes.size())
+    throw std::invalid_argument("AncfBeam::set_initial_shape: one position and slope per node");
+  geometry_.positions = std::move(positions);
+  geometry_.slopes = std::move(slopes);
+}
+
 void AncfBeam::write_initial_state(VecX& q, VecX& v) const {
   for (int k = 0; k < num_nodes(); ++k) {
     q.segment<3>(node_index(k)) = geometry_.positions[k];

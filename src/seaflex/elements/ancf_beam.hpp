@@ -93,6 +93,9 @@ class AncfBeam : public Body {
   double mass() const;
   /// Initial node positions and slopes, as built.
   const BeamGeometry& initial_geometry() const { return geometry_; }
+  /// Replaces the initial node positions and slopes (a better first guess for statics,
+  /// found once the loads are known); the element lengths stay. Before the run starts.
+  void set_initial_shape(std::vector<Vec3> positions, std::vector<Vec3> slopes);
   const BeamOptions& options() const { return options_; }
 
   /// Global index of the first coordinate of node k (r), r' follows at +3.

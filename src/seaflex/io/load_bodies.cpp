@@ -3,11 +3,15 @@
 
 #include <numeric>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/elements/catenary_shape.hpp"
+#include "seaflex/elements/line_catenary.hpp"
+#include "seaflex/forces/beam_attachment.hpp"
+#include "seaflex/forces/morison_beam.hpp"
 #include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/math/rotation.hpp"
@@ -243,9 +247,55 @@ std::optional<LineSections> read_line_sections(MapReader& r, const std::string& 
   return out;
 }
 
+
+// once the loads and hydrodynamics are read: a slack line whose submerged weight varies
+// along it (sections, clumps, buoyancy modules) starts as its weighted catenary
+// (elements/line_catenary.hpp) instead of the uniform one; the uniform one stays when the
+// weight is uniform or no weighted catenary is found
+void reshape_by_weight(const std::string& name, const Vec3& start, const Vec3& end, bool seabed,
+                       const BeamGeometry& uniform, const CatenaryShape& shape, LoadContext& ctx) {
+  ctx.after_bodies.push_back([=](LoadContext& c) {
+    AncfBeam* beam = nullptr;
+    for (const auto& b : c.system.bodies())
+      if (b->name() == name) beam = dynamic_cast<AncfBeam*>(b.get());
+    if (!beam) return;
+    const double g = c.model.gravity.norm();
+    LineWeights w;
+    const MorisonBeam* morison = nullptr;
+    for (const auto& f : c.system.forces()) {
+      if (const auto* m = dynamic_cast<const MorisonBeam*>(f.get()); m && &m->beam() == beam)
+        morison = m;
+      if (const auto* a = dynamic_cast<const BeamAttachment*>(f.get()); a && &a->beam() == beam)
+        for (const auto& [s, share] : a->load_points())
+          w.points.emplace_back(s, share * a->submerged_weight());
+    }
+    for (int k = 0; k < beam->num_elements(); ++k) {
+      double per_length = beam->section(k).mass_per_length() * g;
+      if (morison && c.model.ocean) {
+        const MorisonBeamCoefficients& mc = morison->coefficients(beam->section_index(k));
+        const double rho = c.model.ocean->rho();
+        per_length += mc.internal_density * std::numbers::pi / 4 * mc.internal_diameter *
+                      mc.internal_diameter * g;
+        if (mc.buoyancy) per_length -= rho * g * std::numbers::pi / 4 * mc.diameter * mc.diameter;
+      }
+      w.per_length.push_back(per_length);
+    }
+    const bool uniform_weight =
+        w.points.empty() &&
+        std::all_of(w.per_length.begin(), w.per_length.end(),
+                    [&](double x) { return std::abs(x - w.per_length.front()) <=
+                                           1e-12 * std::abs(w.per_length.front()); });
+    if (uniform_weight) return;
+    if (auto better = weighted_catenary(start, end, uniform.element_lengths, w, seabed, uniform,
+                                        shape))
+      beam->set_initial_shape(std::move(better->positions), std::move(better->slopes));
+  });
+}
+
 // the first guess of a line made of sections between start and end: straight when its
 // length is the chord's (or shorter: stretched), else its catenary
-std::optional<BeamGeometry> line_geometry(MapReader& r, const Vec3& start, const Vec3& end,
+std::optional<BeamGeometry> line_geometry(MapReader& r, const std::string& name,
+                                          const Vec3& start, const Vec3& end,
                                           const std::vector<double>& lengths, LoadContext& ctx,
                                           bool* ok) {
   const double L = std::accumulate(lengths.begin(), lengths.end(), 0.0);
@@ -289,7 +339,10 @@ std::optional<BeamGeometry> line_geometry(MapReader& r, const Vec3& start, const
     seabed_z = ctx.model.seabed->at(lower.x(), lower.y()).height;
   }
   try {
-    return catenary_geometry(start, end, lengths, seabed_z);
+    CatenaryShape shape;
+    BeamGeometry g = catenary_geometry(start, end, lengths, seabed_z, &shape);
+    reshape_by_weight(name, start, end, seabed_z.has_value(), g, shape, ctx);
+    return g;
   } catch (const std::invalid_argument& e) {
     r.error("sections", e.what());
     *ok = false;
@@ -413,7 +466,9 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
           seabed_z = ctx.model.seabed->at(lower.x(), lower.y()).height;
         }
         try {
-          geometry = catenary_geometry(*start, *end, *length, *n, seabed_z);
+          CatenaryShape shape;
+          geometry = catenary_geometry(*start, *end, *length, *n, seabed_z, &shape);
+          reshape_by_weight(name, *start, *end, seabed_z.has_value(), *geometry, shape, ctx);
         } catch (const std::invalid_argument& e) {
           r.error("length", e.what());
           ok = false;
@@ -440,7 +495,7 @@ std::unique_ptr<Body> build_ancf_beam(MapReader& r, const std::string& name, Loa
       const auto start = r.vec3("start", Need::kRequired, "m");
       const auto end = r.vec3("end", Need::kRequired, "m");
       if (start && end)
-        geometry = line_geometry(r, *start, *end, line->element_lengths, ctx, &ok);
+        geometry = line_geometry(r, name, *start, *end, line->element_lengths, ctx, &ok);
     }
   } else {
     const SectionDefaults none;
