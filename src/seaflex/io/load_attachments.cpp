@@ -95,13 +95,13 @@ std::unique_ptr<Force> build_buoyancy_modules(MapReader& r, const std::string& n
         count = static_cast<int>(std::max(1.0, n));
     }
   }
+  const auto distribution =
+      r.choice("distribution", Need::kOptional, {"smeared", "discrete"}).value_or("smeared");
+  const auto p = read_attachment(r);
   if (from && to && !(*to > *from)) {
     r.error("to", fmt::format("{:g} m is not after from ({:g} m)", *to, *from));
     return nullptr;
   }
-  const auto distribution =
-      r.choice("distribution", Need::kOptional, {"smeared", "discrete"}).value_or("smeared");
-  const auto p = read_attachment(r);
   if (!beam || !from || !to || !count || !p) return nullptr;
   if (distribution == "smeared")
     return BeamAttachment::smeared(name, *beam, *from, *to, *count, *p, ctx.model.gravity,
