@@ -34,9 +34,9 @@ TEST(LineCatenary, UniformWeightIsTheUniformCatenary) {
     bool seabed;
   };
   const Case cases[] = {
-      {{0, 0, -100}, {300, 0, 0}, 400, false},     // free-hanging
-      {{0, 0, -200}, {600, 200, 0}, 780, true},    // laid on the seabed from the start
-      {{800, 0, 0}, {0, 0, -200}, 950, true},      // given from the upper end
+      {{0, 0, -100}, {300, 0, 0}, 400, false},   // free-hanging
+      {{0, 0, -200}, {600, 200, 0}, 780, true},  // laid on the seabed from the start
+      {{800, 0, 0}, {0, 0, -200}, 950, true},    // given from the upper end
   };
   for (const Case& c : cases) {
     const int n = 80;
@@ -46,8 +46,8 @@ TEST(LineCatenary, UniformWeightIsTheUniformCatenary) {
         c.seabed ? std::optional<double>(std::min(c.start.z(), c.end.z())) : std::nullopt, &shape);
     LineWeights w;
     w.per_length.assign(n, 700.0);
-    const auto g = weighted_catenary(c.start, c.end, uniform.element_lengths, w, c.seabed, uniform,
-                                     shape);
+    const auto g =
+        weighted_catenary(c.start, c.end, uniform.element_lengths, w, c.seabed, uniform, shape);
     ASSERT_TRUE(g.has_value());
     // both solve the same equations to round-off (1e-9 of the span in the iterations)
     expect_same(*g, uniform, 1e-6 * c.length);

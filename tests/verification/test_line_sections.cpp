@@ -50,8 +50,8 @@ struct Solved {
 };
 
 std::unique_ptr<Solved> solve(const std::string& yaml) {
-  auto s = std::make_unique<Solved>(Solved{io::load_model_text(yaml, "model.yaml"), {}, nullptr,
-                                           {}, nullptr});
+  auto s = std::make_unique<Solved>(
+      Solved{io::load_model_text(yaml, "model.yaml"), {}, nullptr, {}, nullptr});
   s->state = s->model.system->initial_state();
   StaticsSettings settings = s->model.statics;
   settings.tolerance = 1e-12;  // far below the tolerances asked of the results
@@ -250,8 +250,8 @@ TEST(LineSections, ClumpMassGivesTheRodWithTipMassFrequency) {
   const double c = std::sqrt(E / rho);  // unstressed
   for (const bool wet : {false, true}) {
     const double volume = wet ? 0.5 : 0.0, ca = wet ? 1.0 : 0.0;
-    const auto m = solve(rod_with_clump(wet ? "  water: {density: 1025, depth: 500}" : "", volume,
-                                        ca));
+    const auto m =
+        solve(rod_with_clump(wet ? "  water: {density: 1025, depth: 500}" : "", volume, ca));
     const double M = 1000.0 + (wet ? kRho * ca * volume : 0.0);
     // the rod is stretched by the clump's submerged weight T: its material law (Green-
     // Lagrange strain, T = EA (lambda^2 - 1) / 2 lambda per unit reference length) has
@@ -270,8 +270,8 @@ TEST(LineSections, ClumpMassGivesTheRodWithTipMassFrequency) {
     // strain by 5e-7); 1e-5 asked
     EXPECT_NEAR(axial_omega(*m, M), expected, 1e-5 * expected) << (wet ? "in water" : "in air");
     // statics: the rod carries the clump's submerged weight plus its own weight (1e-9)
-    const double T_top = m->out(m->results->num_stations() - 1,
-                                col(post::BeamQuantity::kTensionEffective));
+    const double T_top =
+        m->out(m->results->num_stations() - 1, col(post::BeamQuantity::kTensionEffective));
     EXPECT_NEAR(T_top, T + rho * A * L * kG, 1e-6 * T_top);
   }
 }

@@ -16,9 +16,9 @@ struct Event {
 
 struct Shot {
   bool ok = false;
-  double x = 0.0, z = 0.0;            // of the upper end, from the lower end
-  std::vector<double> nx, nz;         // per node from the lower end (index = node from P)
-  std::vector<double> tx, tz;         // unit tangents
+  double x = 0.0, z = 0.0;     // of the upper end, from the lower end
+  std::vector<double> nx, nz;  // per node from the lower end (index = node from P)
+  std::vector<double> tx, tz;  // unit tangents
 };
 
 class Chain {
@@ -114,8 +114,7 @@ std::optional<BeamGeometry> weighted_catenary(const Vec3& start, const Vec3& end
     const int j = reversed ? n - k : k;  // node index counted from P
     events.push_back({reversed ? L - arc[k] : arc[k], j, 0.0});
   }
-  for (const auto& [s, load] : weights.points)
-    events.push_back({reversed ? L - s : s, -1, load});
+  for (const auto& [s, load] : weights.points) events.push_back({reversed ? L - s : s, -1, load});
   std::stable_sort(events.begin(), events.end(),
                    [](const Event& a, const Event& b) { return a.sigma < b.sigma; });
   std::vector<double> piece_w;
@@ -166,7 +165,8 @@ std::optional<BeamGeometry> weighted_catenary(const Vec3& start, const Vec3& end
     Eigen::Vector2d rt;
     // backtracking: no step of ln H above 2 (a factor e^2)
     if (std::abs(step[0]) > 2.0) t = 2.0 / std::abs(step[0]);
-    while (t > 1e-8 && (!residual(p0 + t * step[0], p1 + t * step[1], &rt) || rt.norm() >= r.norm()))
+    while (t > 1e-8 &&
+           (!residual(p0 + t * step[0], p1 + t * step[1], &rt) || rt.norm() >= r.norm()))
       t *= 0.5;
     if (!(t > 1e-8)) return std::nullopt;
     p0 += t * step[0];

@@ -29,8 +29,8 @@ namespace seaflex {
 
 /// The submerged weight along a line, by reference arc length from its start.
 struct LineWeights {
-  std::vector<double> per_length;                  ///< per element (N/m), positive down
-  std::vector<std::pair<double, double>> points;   ///< (arc length (m), weight (N) down)
+  std::vector<double> per_length;                 ///< per element (N/m), positive down
+  std::vector<std::pair<double, double>> points;  ///< (arc length (m), weight (N) down)
 };
 
 /// The node positions and unit slopes of the weighted catenary from start to end with

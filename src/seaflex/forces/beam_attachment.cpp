@@ -34,9 +34,9 @@ BeamAttachment::BeamAttachment(std::string name, const AncfBeam& beam,
 }
 
 std::unique_ptr<BeamAttachment> BeamAttachment::smeared(std::string name, const AncfBeam& beam,
-                                                       double from, double to, int count,
-                                                       AttachmentProperties p, Vec3 g,
-                                                       std::shared_ptr<const hydro::Ocean> ocean) {
+                                                        double from, double to, int count,
+                                                        AttachmentProperties p, Vec3 g,
+                                                        std::shared_ptr<const hydro::Ocean> ocean) {
   if (!(to > from) || count < 1)
     throw std::invalid_argument("BeamAttachment::smeared: need from < to and count >= 1");
   std::vector<double> centres;
@@ -56,8 +56,8 @@ std::unique_ptr<BeamAttachment> BeamAttachment::smeared(std::string name, const 
     const double l = beam.element_length(k);
     for (std::size_t q = 0; q < rule.points.size(); ++q) {
       const double s = s0 + (s1 - s0) * rule.points[q];
-      a->points_.push_back({k, (s - beam.node_arc_length(k)) / l,
-                            per_length * (s1 - s0) * rule.weights[q], {}});
+      a->points_.push_back(
+          {k, (s - beam.node_arc_length(k)) / l, per_length * (s1 - s0) * rule.weights[q], {}});
     }
   }
   return a;
@@ -89,8 +89,7 @@ double BeamAttachment::submerged_weight() const {
   return p_.mass * g - (ocean_ ? ocean_->rho() * g * p_.volume : 0.0);
 }
 
-Vec3 BeamAttachment::load(const Vec3& r, const Vec3& rdot, double t, bool* wet,
-                          Mat3* df_dv) const {
+Vec3 BeamAttachment::load(const Vec3& r, const Vec3& rdot, double t, bool* wet, Mat3* df_dv) const {
   Vec3 f = p_.mass * g_;
   if (df_dv) df_dv->setZero();
   *wet = false;
@@ -99,10 +98,10 @@ Vec3 BeamAttachment::load(const Vec3& r, const Vec3& rdot, double t, bool* wet,
   if (!fl.wet) return f;
   *wet = true;
   const double rho = ocean_->rho();
-  f.z() += rho * g_.norm() * p_.volume;                        // buoyancy
-  f += rho * p_.volume * (1.0 + p_.ca) * fl.acceleration;      // DNV-RP-C205 eq. 6.2.2
-  const Vec3 w = fl.velocity - rdot;                           // relative velocity
-  const double cd = 0.5 * rho * p_.cd * p_.drag_area;          // Morison drag
+  f.z() += rho * g_.norm() * p_.volume;                    // buoyancy
+  f += rho * p_.volume * (1.0 + p_.ca) * fl.acceleration;  // DNV-RP-C205 eq. 6.2.2
+  const Vec3 w = fl.velocity - rdot;                       // relative velocity
+  const double cd = 0.5 * rho * p_.cd * p_.drag_area;      // Morison drag
   const double wn = w.norm();
   f += cd * wn * w;
   if (df_dv) {
@@ -174,10 +173,8 @@ void BeamAttachment::add_channels(ChannelList& channels) const {
                         for (const Point& pt : self->points_) {
                           const double l = self->beam_.element_length(pt.element);
                           const Vec12 e = state.q.segment<12>(self->beam_.node_index(pt.element));
-                          const Vec3 r =
-                              ancf_cable::as_nodes(e) * ancf_cable::shape(pt.xi, l);
-                          const bool wet =
-                              self->ocean_ && self->ocean_->fluid(r, state.t).wet;
+                          const Vec3 r = ancf_cable::as_nodes(e) * ancf_cable::shape(pt.xi, l);
+                          const bool wet = self->ocean_ && self->ocean_->fluid(r, state.t).wet;
                           w += pt.share * (self->p_.mass * g -
                                            (wet ? self->ocean_->rho() * g * self->p_.volume : 0.0));
                         }

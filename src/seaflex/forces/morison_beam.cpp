@@ -25,7 +25,9 @@ MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
 MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
                          std::vector<MorisonBeamCoefficients> coefficients,
                          std::shared_ptr<const hydro::Ocean> ocean)
-    : Force(std::move(name)), beam_(beam), coefficients_(std::move(coefficients)),
+    : Force(std::move(name)),
+      beam_(beam),
+      coefficients_(std::move(coefficients)),
       ocean_(std::move(ocean)) {
   if (coefficients_.size() != beam_.sections().size())
     throw std::invalid_argument("MorisonBeam: one set of coefficients per beam section needed");

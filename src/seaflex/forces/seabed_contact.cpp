@@ -1,8 +1,8 @@
 #include "seaflex/forces/seabed_contact.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <limits>
+#include <stdexcept>
 
 #include "seaflex/hydro/wet_interval.hpp"
 
@@ -130,7 +130,8 @@ void SeabedContact::assemble(const State& state, double, AssemblyTarget& target)
       const double dx = l * (xi1 - xi0) * rule_.weights[g];
       const Vec4 sh = ancf_cable::shape(xi, l);
       const Vec4 shx = ancf_cable::shape_dx(xi, l);
-      const PointForce pf = point_force(beam_.section_index(k), E * sh, E * shx, Ed * sh, want_matrix);
+      const PointForce pf =
+          point_force(beam_.section_index(k), E * sh, E * shx, Ed * sh, want_matrix);
       if (target.forces) {
         auto Q = target.forces->segment<12>(beam_.node_index(k));
         const Vec3 f = pf.normal + pf.friction;
@@ -188,7 +189,8 @@ double SeabedContact::potential_energy(const State& state) const {
       const double xi = xi0 + (xi1 - xi0) * rule_.points[g];
       const Vec3 r = E * ancf_cable::shape(xi, l);
       const double d = seabed_->at(r.x(), r.y()).penetration(r);
-      if (d > 0.0) energy += 0.5 * k_[beam_.section_index(k)] * d * d * l * (xi1 - xi0) * rule_.weights[g];
+      if (d > 0.0)
+        energy += 0.5 * k_[beam_.section_index(k)] * d * d * l * (xi1 - xi0) * rule_.weights[g];
     }
   }
   return energy;
@@ -209,7 +211,8 @@ SeabedContact::Totals SeabedContact::totals(const State& state) const {
       const double xi = xi0 + (xi1 - xi0) * rule_.points[g];
       const double dx = l * (xi1 - xi0) * rule_.weights[g];
       const Vec4 sh = ancf_cable::shape(xi, l);
-      const PointForce pf = point_force(beam_.section_index(k), E * sh, E * ancf_cable::shape_dx(xi, l), Ed * sh, false);
+      const PointForce pf = point_force(beam_.section_index(k), E * sh,
+                                        E * ancf_cable::shape_dx(xi, l), Ed * sh, false);
       out.normal += dx * pf.normal;
       out.friction += dx * pf.friction;
     }

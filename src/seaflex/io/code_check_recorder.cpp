@@ -74,8 +74,8 @@ void CodeCheckRecorder::record(const State& state, std::span<const double>) {
       const double t_ed =
           f.gamma_C * (f.gamma_F * b.tension_f[k] + f.gamma_E * (T - b.tension_f[k]));
       const double u_dnv = post::dnv_combined_utilisation(
-          b.pipes[b.results.beam().section_index(b.results.stations()[k].element)], f, m_d, t_ed, q(i, post::BeamQuantity::kPressureInternal),
-          q(i, post::BeamQuantity::kPressureExternal));
+          b.pipes[b.results.beam().section_index(b.results.stations()[k].element)], f, m_d, t_ed,
+          q(i, post::BeamQuantity::kPressureInternal), q(i, post::BeamQuantity::kPressureExternal));
       const double u_api = post::api_rp_2rd_utilisation(q(i, post::BeamQuantity::kStressVonMises),
                                                         settings_.smys, settings_.design_factor);
       if (u_dnv > b.dnv[k]) {

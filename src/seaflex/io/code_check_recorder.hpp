@@ -50,8 +50,8 @@ class CodeCheckRecorder : public Recorder {
   struct Beam {
     post::BeamResults results;
     std::vector<post::DnvPipe> pipes;  // per beam section
-    std::vector<Vec3> moment_f;     // functional moment per station
-    std::vector<double> tension_f;  // functional effective tension
+    std::vector<Vec3> moment_f;        // functional moment per station
+    std::vector<double> tension_f;     // functional effective tension
     std::vector<double> dnv, dnv_t, api, api_t;
     std::filesystem::path path;
   };

@@ -24,7 +24,8 @@ std::optional<AttachmentProperties> read_attachment(MapReader& r) {
   const auto volume = r.number("volume", Need::kOptional, NumberRule::nonnegative("m^3"));
   const NumberRule coefficient = NumberRule::range(0.0, 10.0, "");
   p.cd = r.number("cd", Need::kOptional, coefficient).value_or(0.0);
-  p.drag_area = r.number("drag_area", Need::kOptional, NumberRule::nonnegative("m^2")).value_or(0.0);
+  p.drag_area =
+      r.number("drag_area", Need::kOptional, NumberRule::nonnegative("m^2")).value_or(0.0);
   p.ca = r.number("ca", Need::kOptional, coefficient).value_or(0.0);
   if (p.cd > 0.0 && !r.has("drag_area")) {
     r.error("drag_area", "required with cd: the area (m^2) the drag coefficient refers to");
@@ -44,9 +45,8 @@ std::optional<AttachmentProperties> read_attachment(MapReader& r) {
   return p;
 }
 
-std::unique_ptr<Force> make(const std::string& name, const AncfBeam& beam,
-                            std::vector<double> arcs, const AttachmentProperties& p,
-                            const LoadContext& ctx) {
+std::unique_ptr<Force> make(const std::string& name, const AncfBeam& beam, std::vector<double> arcs,
+                            const AttachmentProperties& p, const LoadContext& ctx) {
   return std::make_unique<BeamAttachment>(name, beam, std::move(arcs), p, ctx.model.gravity,
                                           ctx.model.ocean);
 }
@@ -57,8 +57,7 @@ std::unique_ptr<Force> build_clump(MapReader& r, const std::string& name, LoadCo
   const AncfBeam* beam = ctx.beam_ref(r, "body");
   std::optional<double> s;
   if (beam)
-    s = r.number("arc_length", Need::kRequired,
-                 NumberRule::range(0.0, beam->length(), "m"));
+    s = r.number("arc_length", Need::kRequired, NumberRule::range(0.0, beam->length(), "m"));
   else
     r.has("arc_length");
   const auto p = read_attachment(r);

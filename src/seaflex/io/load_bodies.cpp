@@ -10,9 +10,9 @@
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/elements/catenary_shape.hpp"
 #include "seaflex/elements/line_catenary.hpp"
+#include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/forces/beam_attachment.hpp"
 #include "seaflex/forces/morison_beam.hpp"
-#include "seaflex/elements/rigid_body.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/math/rotation.hpp"
 #include "seaflex/model/moving_marker.hpp"
@@ -66,7 +66,6 @@ bool check_slender(MapReader& r, std::string_view key, double diameter, double l
   return false;
 }
 
-
 // the material and cross-section that a line's sections take when they do not give their
 // own: the beam's own keys (all optional when the beam has sections)
 struct SectionDefaults {
@@ -81,8 +80,8 @@ std::optional<BeamSection> read_cross_section(MapReader& r, const SectionDefault
   bool ok = true;
   auto E = r.number("youngs_modulus", d.E ? Need::kOptional : Need::kRequired,
                     NumberRule::positive("Pa"));
-  auto rho =
-      r.number("density", d.rho ? Need::kOptional : Need::kRequired, NumberRule::positive("kg/m^3"));
+  auto rho = r.number("density", d.rho ? Need::kOptional : Need::kRequired,
+                      NumberRule::positive("kg/m^3"));
   if (!check_material(r, E, rho)) ok = false;
   if (!E) E = d.E;
   if (!rho) rho = d.rho;
@@ -99,10 +98,10 @@ std::optional<BeamSection> read_cross_section(MapReader& r, const SectionDefault
             "not both");
     return std::nullopt;
   } else if (pipe) {
-    auto od = inherit ? d.od
-                      : r.number("outer_diameter", Need::kRequired, NumberRule::positive("m"));
-    auto id = inherit ? d.id
-                      : r.number("inner_diameter", Need::kOptional, NumberRule::nonnegative("m"));
+    auto od =
+        inherit ? d.od : r.number("outer_diameter", Need::kRequired, NumberRule::positive("m"));
+    auto id =
+        inherit ? d.id : r.number("inner_diameter", Need::kOptional, NumberRule::nonnegative("m"));
     if (od && id && !(*id < *od)) {
       r.error("inner_diameter",
               fmt::format("must be smaller than outer_diameter ({:g} m), got {:g} m", *od, *id));
@@ -113,8 +112,9 @@ std::optional<BeamSection> read_cross_section(MapReader& r, const SectionDefault
   } else {
     const auto A =
         inherit ? d.area : r.number("area", Need::kRequired, NumberRule::positive("m^2"));
-    const auto I = inherit ? d.inertia
-                           : r.number("second_moment", Need::kRequired, NumberRule::positive("m^4"));
+    const auto I = inherit
+                       ? d.inertia
+                       : r.number("second_moment", Need::kRequired, NumberRule::positive("m^4"));
     if (A && I && E && rho) {
       section.area = *A;
       section.second_moment = *I;
@@ -154,7 +154,7 @@ std::optional<SectionDefaults> read_section_defaults(MapReader& r) {
 
 struct LineSections {
   std::vector<BeamSection> sections;
-  std::vector<int> section_of;         // per element
+  std::vector<int> section_of;  // per element
   std::vector<double> element_lengths;
 };
 
@@ -197,8 +197,7 @@ std::optional<LineSections> read_line_sections(MapReader& r, const std::string& 
     } else if (by_count) {
       n = sr.integer("elements", Need::kRequired, 1, kMaxElements);
     } else {
-      const auto seg =
-          sr.number("segment_length", Need::kRequired, NumberRule::positive("m"));
+      const auto seg = sr.number("segment_length", Need::kRequired, NumberRule::positive("m"));
       // the fewest equal elements no longer than the target
       if (seg && length) {
         const double count = std::ceil(*length / *seg * (1.0 - 1e-12));
@@ -247,7 +246,6 @@ std::optional<LineSections> read_line_sections(MapReader& r, const std::string& 
   return out;
 }
 
-
 // once the loads and hydrodynamics are read: a slack line whose submerged weight varies
 // along it (sections, clumps, buoyancy modules) starts as its weighted catenary
 // (elements/line_catenary.hpp) instead of the uniform one; the uniform one stays when the
@@ -281,23 +279,21 @@ void reshape_by_weight(const std::string& name, const Vec3& start, const Vec3& e
       w.per_length.push_back(per_length);
     }
     const bool uniform_weight =
-        w.points.empty() &&
-        std::all_of(w.per_length.begin(), w.per_length.end(),
-                    [&](double x) { return std::abs(x - w.per_length.front()) <=
-                                           1e-12 * std::abs(w.per_length.front()); });
+        w.points.empty() && std::all_of(w.per_length.begin(), w.per_length.end(), [&](double x) {
+          return std::abs(x - w.per_length.front()) <= 1e-12 * std::abs(w.per_length.front());
+        });
     if (uniform_weight) return;
-    if (auto better = weighted_catenary(start, end, uniform.element_lengths, w, seabed, uniform,
-                                        shape))
+    if (auto better =
+            weighted_catenary(start, end, uniform.element_lengths, w, seabed, uniform, shape))
       beam->set_initial_shape(std::move(better->positions), std::move(better->slopes));
   });
 }
 
 // the first guess of a line made of sections between start and end: straight when its
 // length is the chord's (or shorter: stretched), else its catenary
-std::optional<BeamGeometry> line_geometry(MapReader& r, const std::string& name,
-                                          const Vec3& start, const Vec3& end,
-                                          const std::vector<double>& lengths, LoadContext& ctx,
-                                          bool* ok) {
+std::optional<BeamGeometry> line_geometry(MapReader& r, const std::string& name, const Vec3& start,
+                                          const Vec3& end, const std::vector<double>& lengths,
+                                          LoadContext& ctx, bool* ok) {
   const double L = std::accumulate(lengths.begin(), lengths.end(), 0.0);
   const double chord = (end - start).norm();
   if (const auto given = r.number("length", Need::kOptional, NumberRule::positive("m"));

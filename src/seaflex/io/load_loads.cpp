@@ -155,10 +155,8 @@ std::unique_ptr<Force> build_distributed_load(MapReader& r, const std::string& n
 
 const std::map<std::string, ForceBuilder>& load_builders() {
   static const std::map<std::string, ForceBuilder> builders{
-      {"point_force", build_point_force},
-      {"distributed_load", build_distributed_load},
-      {"plate_pressure", build_plate_pressure},
-      {"clump", build_clump},
+      {"point_force", build_point_force},           {"distributed_load", build_distributed_load},
+      {"plate_pressure", build_plate_pressure},     {"clump", build_clump},
       {"buoyancy_modules", build_buoyancy_modules},
   };
   return builders;

@@ -230,17 +230,18 @@ void load_beam_hydro(MapReader& r, const AncfBeam& beam, LoadContext& ctx) {
       for (const auto& o : overrides->second)
         if (o.section == i) {
           MapReader sr(ctx.diag, o.node, o.path);
-          if (sr.valid()) c = read_beam_coefficients(sr, c, true, sec.outer_diameter, beam.length());
+          if (sr.valid())
+            c = read_beam_coefficients(sr, c, true, sec.outer_diameter, beam.length());
           sr.finish();
           own = true;
         }
     if (!own && !(c.diameter > 0.0) && i > 0)
-      r.error("diameter", fmt::format("required: section {} of beam '{}' has no outer_diameter",
-                                      i, beam.name()));
+      r.error("diameter", fmt::format("required: section {} of beam '{}' has no outer_diameter", i,
+                                      beam.name()));
     if (!own && c.internal_density > 0.0 && !(c.internal_diameter > 0.0) && i > 0)
-      r.error("contents_diameter",
-              fmt::format("required: section {} of beam '{}' has no inner_diameter", i,
-                          beam.name()));
+      r.error(
+          "contents_diameter",
+          fmt::format("required: section {} of beam '{}' has no inner_diameter", i, beam.name()));
     per_section.push_back(c);
   }
   r.finish();

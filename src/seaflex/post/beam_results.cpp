@@ -38,8 +38,8 @@ const std::array<BeamQuantityInfo, kBeamQuantityCount>& beam_quantities() {
 }
 
 BeamResults::BeamResults(const AncfBeam& beam, PipePressure pressure, int gauss_points)
-    : BeamResults(beam, std::vector<PipePressure>(beam.sections().size(), pressure),
-                  gauss_points) {}
+    : BeamResults(beam, std::vector<PipePressure>(beam.sections().size(), pressure), gauss_points) {
+}
 
 BeamResults::BeamResults(const AncfBeam& beam, std::vector<PipePressure> pressures,
                          int gauss_points)
