@@ -1,0 +1,236 @@
+#include "seaflex/hydro/wave_grid.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace seaflex::hydro {
+
+namespace {
+
+// 4-point Lagrange weights at x for the nodes x0..x3 (any spacing)
+std::array<double, 4> lagrange4(const double* xn, double x) {
+  std::array<double, 4> w{};
+  for (int a = 0; a < 4; ++a) {
+    double num = 1.0, den = 1.0;
+    for (int b = 0; b < 4; ++b) {
+      if (b == a) continue;
+      num *= x - xn[b];
+      den *= xn[a] - xn[b];
+    }
+    w[static_cast<std::size_t>(a)] = num / den;
+  }
+  return w;
+}
+
+// the stencil on an equal lattice of spacing h: first index and weights (nodes i0 .. i0+3,
+// x between nodes i0+1 and i0+2)
+std::int64_t lattice_stencil(double x, double h, std::array<double, 4>& w) {
+  const double u = x / h;
+  const double fl = std::floor(u);
+  const double f = u - fl;
+  // nodes at -1, 0, 1, 2 relative to fl
+  const double a = f + 1.0, b = f, c = f - 1.0, d = f - 2.0;
+  w[0] = -b * c * d / 6.0;
+  w[1] = a * c * d / 2.0;
+  w[2] = -a * b * d / 2.0;
+  w[3] = a * b * c / 6.0;
+  return static_cast<std::int64_t>(fl) - 1;
+}
+
+}  // namespace
+
+WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
+    : field_(std::move(field)), spec_(spec), slots_(kSlots) {
+  field_.set_grid(nullptr);  // the fallback below the grid is the exact sum
+  if (!(spec.ds > 0.0) || !std::isfinite(spec.ds))
+    throw std::invalid_argument(fmt::format("ds must be > 0, got {}", spec.ds));
+  if (!(spec.dz > 0.0) || !std::isfinite(spec.dz))
+    throw std::invalid_argument(fmt::format("dz must be > 0, got {}", spec.dz));
+  if (!(spec.dz_growth >= 0.0) || !std::isfinite(spec.dz_growth))
+    throw std::invalid_argument(fmt::format("dz_growth must be >= 0, got {}", spec.dz_growth));
+  if (!(spec.dt > 0.0) || !std::isfinite(spec.dt))
+    throw std::invalid_argument(fmt::format("dt must be > 0, got {}", spec.dt));
+  const auto& comps = field_.components();
+  if (!comps.empty()) {
+    for (const auto& c : comps)
+      if (c.direction != comps.front().direction)
+        throw std::invalid_argument(
+            "the components travel in more than one direction: grid kinematics need a "
+            "long-crested sea");
+    cos_b_ = std::cos(comps.front().direction);
+    sin_b_ = std::sin(comps.front().direction);
+  }
+  // the deepest level: the seabed, or in deep water where e^{k_min z} < 1e-9
+  const double depth = field_.depth();
+  const bool deep = std::isinf(depth);
+  double bottom = depth;
+  if (deep) {
+    double kmin = std::numeric_limits<double>::infinity();
+    for (const auto& c : comps)
+      if (c.amplitude != 0.0 && c.k > 0.0) kmin = std::min(kmin, c.k);
+    bottom = std::isfinite(kmin) ? 21.0 / kmin : 1.0;
+  }
+  z_.push_back(0.0);
+  while (z_.back() > -bottom) {
+    const double next = z_.back() - (spec.dz + spec.dz_growth * (-z_.back()));
+    z_.push_back(std::max(next, -bottom));
+    if (static_cast<int>(z_.size()) > kMaxLevels)
+      throw std::invalid_argument(
+          fmt::format("dz: more than {} levels over the depth of {:g} m: increase dz or dz_growth",
+                      kMaxLevels, bottom));
+  }
+  if (z_.size() < 4) z_ = {0.0, -bottom / 3.0, -2.0 * bottom / 3.0, -bottom};  // a cubic: 4
+  if (!deep)
+    for (double& z : z_) z = std::max(z, -depth);
+  // depth factors at every level (the same expressions as WaveField::airy)
+  const std::size_t J = z_.size();
+  fh_.assign(comps.size() * J, 0.0);
+  fv_.assign(comps.size() * J, 0.0);
+  fp_.assign(comps.size() * J, 0.0);
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    const double k = comps[i].k;
+    for (std::size_t j = 0; j < J; ++j) {
+      const double z = z_[j];
+      const double ekz = std::exp(k * z);
+      if (deep) {
+        fh_[i * J + j] = fv_[i * J + j] = fp_[i * J + j] = ekz;
+      } else {
+        const double e_image = std::exp(-k * (z + 2.0 * depth));
+        const double e2 = std::exp(-2.0 * k * depth);
+        const double one_minus = -std::expm1(-2.0 * k * depth);
+        fh_[i * J + j] = (ekz + e_image) / one_minus;
+        fv_[i * J + j] = (ekz - e_image) / one_minus;
+        fp_[i * J + j] = (ekz + e_image) / (1.0 + e2);
+      }
+    }
+  }
+}
+
+std::int64_t WaveGrid::columns_filled() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return filled_;
+}
+
+const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n) const {
+  Slot& slot = slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
+  if (slot.n != n) {
+    slot.columns.clear();
+    slot.n = n;
+  }
+  auto [it, inserted] = slot.columns.try_emplace(m);
+  if (!inserted) return it->second;
+  // the exact sums at (s_m, t_n) for every level, without the ramp (WaveField::airy)
+  const std::size_t J = z_.size();
+  std::vector<double>& col = it->second;
+  col.assign(1 + 5 * J, 0.0);
+  double* uh = col.data() + 1;
+  double* uz = uh + J;
+  double* ah = uz + J;
+  double* az = ah + J;
+  double* pp = az + J;
+  const double s = static_cast<double>(m) * spec_.ds;
+  const double t = static_cast<double>(n) * spec_.dt;
+  const auto& comps = field_.components();
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    const auto& c = comps[i];
+    if (c.amplitude == 0.0 || c.omega == 0.0) continue;
+    const double theta = c.omega * t - c.k * s + c.phase;
+    const double ac = c.amplitude * std::cos(theta);
+    const double as = c.amplitude * std::sin(theta);
+    col[0] += ac;
+    const double w = c.omega, ww = c.omega * c.omega;
+    const double cuh = w * ac, cah = -ww * as, cuz = -w * as, caz = -ww * ac;
+    const double* fh = fh_.data() + i * J;
+    const double* fv = fv_.data() + i * J;
+    const double* fp = fp_.data() + i * J;
+    for (std::size_t j = 0; j < J; ++j) {
+      uh[j] += cuh * fh[j];
+      ah[j] += cah * fh[j];
+      uz[j] += cuz * fv[j];
+      az[j] += caz * fv[j];
+      pp[j] += ac * fp[j];
+    }
+  }
+  ++filled_;
+  return col;
+}
+
+double WaveGrid::elevation(double x, double y, double t) const {
+  const double ramp = field_.ramp_factor(t);
+  if (ramp == 0.0) return 0.0;
+  std::array<double, 4> ws{}, wt{};
+  const std::int64_t m0 = lattice_stencil(x * cos_b_ + y * sin_b_, spec_.ds, ws);
+  const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
+  double eta = 0.0;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) eta += wt[b] * ws[a] * column(m0 + a, n0 + b)[0];
+  return ramp * eta;
+}
+
+FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
+  const double ramp = field_.ramp_factor(t);
+  if (ramp == 0.0) {
+    FluidKinematics calm;
+    calm.wet = p.z() <= 0.0;
+    return calm;
+  }
+  std::array<double, 4> ws{}, wt{};
+  const std::int64_t m0 = lattice_stencil(p.x() * cos_b_ + p.y() * sin_b_, spec_.ds, ws);
+  const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
+  const std::size_t J = z_.size();
+  std::array<const std::vector<double>*, 16> cols{};
+  std::unique_lock<std::mutex> lock(mutex_);
+  double eta = 0.0;
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) {
+      cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
+      eta += wt[b] * ws[a] * (*cols[static_cast<std::size_t>(4 * b + a)])[0];
+    }
+  eta *= ramp;
+  if (p.z() > eta) return FluidKinematics{};
+  const double depth = field_.depth();
+  const bool deep = std::isinf(depth);
+  double z = p.z();
+  if (!deep && z < -depth) z = -depth;
+  double z_eval;
+  if (field_.wheeler_stretching()) {
+    // Wheeler (1970), as WaveField::kinematics
+    z_eval = deep ? z - eta : depth * (z - eta) / (depth + eta);
+  } else {
+    z_eval = std::min(z, 0.0);
+  }
+  if (z_eval < z_.back()) {  // deep water below the grid: the exact sum
+    lock.unlock();
+    return field_.kinematics(p, t);
+  }
+  z_eval = std::min(z_eval, 0.0);
+  // the level interval z_j >= z_eval >= z_{j+1} (levels descend), then 4 levels around it
+  const auto it = std::lower_bound(z_.begin(), z_.end(), z_eval, std::greater<double>());
+  std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, (it - z_.begin()) - 1);
+  std::ptrdiff_t j0 = std::clamp<std::ptrdiff_t>(j - 1, 0, static_cast<std::ptrdiff_t>(J) - 4);
+  const std::array<double, 4> wz = lagrange4(z_.data() + j0, z_eval);
+  std::array<double, 5> v{};
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) {
+      const double wab = wt[b] * ws[a];
+      const double* col = cols[static_cast<std::size_t>(4 * b + a)]->data() + 1 + j0;
+      for (std::size_t q = 0; q < 5; ++q) {
+        const double* cq = col + q * J;
+        v[q] += wab * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);
+      }
+    }
+  lock.unlock();
+  FluidKinematics out;
+  out.velocity = ramp * Vec3(v[0] * cos_b_, v[0] * sin_b_, v[1]);
+  out.acceleration = ramp * Vec3(v[2] * cos_b_, v[2] * sin_b_, v[3]);
+  out.dynamic_pressure = ramp * field_.rho() * field_.g() * v[4];
+  out.wet = true;
+  return out;
+}
+
+}  // namespace seaflex::hydro

@@ -1,0 +1,95 @@
+// Wave kinematics interpolated from a space-time grid, at a cost per evaluation that does
+// not depend on the number of wave components (issue 21; docs/model-format.md 4.2,
+// docs/verification.md "Grid wave kinematics").
+// - The exact field (wave_field.hpp) is a sum over N Airy components at every point and time.
+//   For a long-crested sea (all components travel along one direction b) it depends on
+//   s = x cos b + y sin b, z and t only. The grid holds, at stations s_m = m ds (every
+//   integer m, filled when first needed), levels z_j in [-d, 0] and times t_n = n dt, the
+//   exact sums (without the ramp) of eta(s, t) and of the Airy velocity, local acceleration
+//   and dynamic pressure at z_j: one column (s_m, t_n) costs N (1 + 5 J) multiply-adds
+//   (J levels), once per run.
+// - Levels: z_0 = 0, z_{j+1} = z_j - (dz + dz_growth |z_j|), the last one at -d (deep
+//   water: at -21 / k_min, where e^{k_min z} < 1e-9; below it the exact sum is used): fine
+//   at the surface where the shortest components live, coarse at depth where only the long
+//   ones remain.
+// - A point is evaluated as the exact field does, with every sum replaced by 4-point
+//   Lagrange interpolation (cubic) in s, in t and (on the unequal levels) in z: eta(s, t)
+//   first; above it the point is dry; below, Wheeler stretching maps z to
+//   z_s = d (z - eta) / (d + eta) (deep: z - eta; without stretching z_s = min(z, 0)) and the
+//   Airy values are interpolated at (s, z_s, t). Stretching thus costs nothing extra and its
+//   error is that of eta times dU/dz.
+// - Error of cubic Lagrange interpolation of cos(k x) with spacing h on the middle interval:
+//   at most (9/16)/4! (k h)^4 = 0.0234 (k h)^4 of the amplitude (e.g. Davis 1975,
+//   "Interpolation and Approximation", thm. 3.1.1); for a component of frequency w, each
+//   direction adds 0.0234 (k ds)^4, 0.0234 (w dt)^4 and 0.0234 (k h_z)^4 e^{k z} of its
+//   amplitude. The defaults (ds 0.5 m, dz 0.25 m, dz_growth 0.1, dt 0.1 s) keep the
+//   shortest component of the default band (5 wp) of a Tp = 10 s sea, k = 1.0 rad/m, to
+//   1.5e-3 of its own amplitude, and the whole field to below 1e-4 of the RMS velocity
+//   (measured: tests/unit/hydro/wave_grid_test.cpp).
+// Columns live in a ring of 64 time slots (memory ~ 64 x columns used x (1 + 5 J) doubles);
+// evaluations must lie within 60 dt of each other (a time loop's are). Thread-safe: columns
+// are filled and read under a mutex.
+#pragma once
+
+#include <cstdint>
+#include <mutex>
+#include <unordered_map>
+#include <vector>
+
+#include "seaflex/hydro/wave_field.hpp"
+
+namespace seaflex::hydro {
+
+/// Grid spacings (docs/model-format.md 4.2, `grid`).
+struct WaveGridSpec {
+  double ds = 0.5;         ///< (m) station spacing along the wave direction, > 0
+  double dz = 0.25;        ///< (m) level spacing at the mean surface, > 0
+  double dz_growth = 0.1;  ///< (-) the spacing grows by this times the depth, >= 0
+  double dt = 0.1;         ///< (s) time sample spacing, > 0
+};
+
+class WaveGrid {
+ public:
+  /// The most levels the grid accepts (a guard against a resource blow-up).
+  static constexpr int kMaxLevels = 20000;
+
+  /// field: the exact sea, long-crested (all components with one direction), without a
+  /// grid of its own. Throws std::invalid_argument naming the field: "ds must be > 0, got
+  /// 0" (same for dz, dt), "dz_growth must be >= 0, got -1", "dz: 25000 levels over the
+  /// depth of 1000 m, more than 20000: increase dz or dz_growth", "the components travel in
+  /// more than one direction: grid kinematics need a long-crested sea".
+  WaveGrid(WaveField field, WaveGridSpec spec);
+
+  /// As WaveField::elevation, interpolated.
+  double elevation(double x, double y, double t) const;
+  /// As WaveField::kinematics, interpolated (exact below the grid's deepest level).
+  FluidKinematics kinematics(const Vec3& p, double t) const;
+
+  /// The levels z_j (m), from 0 down.
+  const std::vector<double>& levels() const { return z_; }
+  const WaveGridSpec& spec() const { return spec_; }
+  /// Columns computed so far (each N (1 + 5 J) multiply-adds).
+  std::int64_t columns_filled() const;
+
+ private:
+  struct Slot {
+    std::int64_t n = INT64_MIN;
+    std::unordered_map<std::int64_t, std::vector<double>> columns;
+  };
+  static constexpr int kSlots = 64;
+
+  // the column (m, n): [eta, uh(J), uz(J), ah(J), az(J), p/(rho g)(J)]; caller holds mutex_
+  const std::vector<double>& column(std::int64_t m, std::int64_t n) const;
+
+  WaveField field_;
+  WaveGridSpec spec_;
+  double cos_b_ = 1.0, sin_b_ = 0.0;
+  std::vector<double> z_;
+  // depth factors f_h, f_v, f_p of component i at level j: [i * J + j]
+  std::vector<double> fh_, fv_, fp_;
+  mutable std::mutex mutex_;
+  mutable std::vector<Slot> slots_;
+  mutable std::int64_t filled_ = 0;
+};
+
+}  // namespace seaflex::hydro
