@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -41,10 +42,17 @@ std::int64_t lattice_stencil(double x, double h, std::array<double, 4>& w) {
   return static_cast<std::int64_t>(fl) - 1;
 }
 
+// a process-wide number for each grid (never 0), so a thread's cache never mistakes a new grid
+// at the address of a destroyed one for it
+std::uint64_t next_id() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+
 }  // namespace
 
 WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
-    : field_(std::move(field)), spec_(spec), slots_(kSlots) {
+    : field_(std::move(field)), spec_(spec), slots_(kSlots), id_(next_id()) {
   field_.set_grid(nullptr);  // the fallback below the grid is the exact sum
   if (!(spec.ds > 0.0) || !std::isfinite(spec.ds))
     throw std::invalid_argument(fmt::format("ds must be > 0, got {}", spec.ds));
@@ -120,6 +128,7 @@ const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n) cons
   if (slot.n != n) {
     slot.columns.clear();
     slot.n = n;
+    ++generation_;
   }
   auto [it, inserted] = slot.columns.try_emplace(m);
   if (!inserted) return it->second;
@@ -159,6 +168,28 @@ const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n) cons
   return col;
 }
 
+const std::array<const std::vector<double>*, 16>& WaveGrid::stencil(std::int64_t m0,
+                                                                    std::int64_t n0) const {
+  struct Cache {
+    std::uint64_t grid = 0, generation = 0;
+    std::int64_t m0 = 0, n0 = 0;
+    std::array<const std::vector<double>*, 16> cols{};
+  };
+  thread_local Cache cache;
+  if (cache.grid == id_ && cache.generation == generation_ && cache.m0 == m0 && cache.n0 == n0)
+    return cache.cols;
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a)
+      cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
+  // column() may have cleared a slot: the generation after the 16 lookups (they never clear
+  // one another's slots: 4 consecutive times use 4 different slots)
+  cache.grid = id_;
+  cache.generation = generation_;
+  cache.m0 = m0;
+  cache.n0 = n0;
+  return cache.cols;
+}
+
 double WaveGrid::elevation(double x, double y, double t) const {
   const double ramp = field_.ramp_factor(t);
   if (ramp == 0.0) return 0.0;
@@ -167,8 +198,10 @@ double WaveGrid::elevation(double x, double y, double t) const {
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   double eta = 0.0;
   const std::lock_guard<std::mutex> lock(mutex_);
+  const auto& cols = stencil(m0, n0);
   for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) eta += wt[b] * ws[a] * column(m0 + a, n0 + b)[0];
+    for (int a = 0; a < 4; ++a)
+      eta += wt[b] * ws[a] * (*cols[static_cast<std::size_t>(4 * b + a)])[0];
   return ramp * eta;
 }
 
@@ -183,14 +216,12 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   const std::int64_t m0 = lattice_stencil(p.x() * cos_b_ + p.y() * sin_b_, spec_.ds, ws);
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   const std::size_t J = z_.size();
-  std::array<const std::vector<double>*, 16> cols{};
   std::unique_lock<std::mutex> lock(mutex_);
+  const std::array<const std::vector<double>*, 16> cols = stencil(m0, n0);
   double eta = 0.0;
   for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) {
-      cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
+    for (int a = 0; a < 4; ++a)
       eta += wt[b] * ws[a] * (*cols[static_cast<std::size_t>(4 * b + a)])[0];
-    }
   eta *= ramp;
   if (p.z() > eta) return FluidKinematics{};
   const double depth = field_.depth();

@@ -33,6 +33,7 @@
 // are filled and read under a mutex.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <mutex>
 #include <unordered_map>
@@ -82,6 +83,9 @@ class WaveGrid {
 
   // the column (m, n): [eta, uh(J), uz(J), ah(J), az(J), p/(rho g)(J)]; caller holds mutex_
   const std::vector<double>& column(std::int64_t m, std::int64_t n) const;
+  // the 16 columns (m0 + a, n0 + b) at [4 b + a]; caller holds mutex_. Remembers the last
+  // stencil of each thread (a Morison point asks 7 times at nearly one place).
+  const std::array<const std::vector<double>*, 16>& stencil(std::int64_t m0, std::int64_t n0) const;
 
   WaveField field_;
   WaveGridSpec spec_;
@@ -92,6 +96,8 @@ class WaveGrid {
   mutable std::mutex mutex_;
   mutable std::vector<Slot> slots_;
   mutable std::int64_t filled_ = 0;
+  mutable std::uint64_t generation_ = 0;  // counts slot clearings (they free columns)
+  std::uint64_t id_;                      // this grid, for the threads' stencil caches
 };
 
 }  // namespace seaflex::hydro
