@@ -123,7 +123,7 @@ std::int64_t WaveGrid::columns_filled() const {
   return filled_;
 }
 
-const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n) const {
+const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n, bool full) const {
   Slot& slot = slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
   if (slot.n != n) {
     slot.columns.clear();
@@ -131,26 +131,31 @@ const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n) cons
     ++generation_;
   }
   auto [it, inserted] = slot.columns.try_emplace(m);
-  if (!inserted) return it->second;
+  std::vector<double>& col = it->second;
+  const double s = static_cast<double>(m) * spec_.ds;
+  const double t = static_cast<double>(n) * spec_.dt;
+  const auto& comps = field_.components();
+  if (inserted) {
+    // the elevation alone: N cosines (the wet interval of an element asks only for it)
+    double eta = 0.0;
+    for (const auto& c : comps) eta += c.amplitude * std::cos(c.omega * t - c.k * s + c.phase);
+    col.assign(1, eta);
+  }
+  if (!full || col.size() > 1) return col;
   // the exact sums at (s_m, t_n) for every level, without the ramp (WaveField::airy)
   const std::size_t J = z_.size();
-  std::vector<double>& col = it->second;
-  col.assign(1 + 5 * J, 0.0);
+  col.resize(1 + 5 * J, 0.0);
   double* uh = col.data() + 1;
   double* uz = uh + J;
   double* ah = uz + J;
   double* az = ah + J;
   double* pp = az + J;
-  const double s = static_cast<double>(m) * spec_.ds;
-  const double t = static_cast<double>(n) * spec_.dt;
-  const auto& comps = field_.components();
   for (std::size_t i = 0; i < comps.size(); ++i) {
     const auto& c = comps[i];
     if (c.amplitude == 0.0 || c.omega == 0.0) continue;
     const double theta = c.omega * t - c.k * s + c.phase;
     const double ac = c.amplitude * std::cos(theta);
     const double as = c.amplitude * std::sin(theta);
-    col[0] += ac;
     const double w = c.omega, ww = c.omega * c.omega;
     const double cuh = w * ac, cah = -ww * as, cuz = -w * as, caz = -ww * ac;
     const double* fh = fh_.data() + i * J;
@@ -169,18 +174,22 @@ const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n) cons
 }
 
 const std::array<const std::vector<double>*, 16>& WaveGrid::stencil(std::int64_t m0,
-                                                                    std::int64_t n0) const {
+                                                                    std::int64_t n0,
+                                                                    bool full) const {
   struct Cache {
     std::uint64_t grid = 0, generation = 0;
     std::int64_t m0 = 0, n0 = 0;
+    bool full = false;
     std::array<const std::vector<double>*, 16> cols{};
   };
   thread_local Cache cache;
-  if (cache.grid == id_ && cache.generation == generation_ && cache.m0 == m0 && cache.n0 == n0)
+  if (cache.grid == id_ && cache.generation == generation_ && cache.m0 == m0 && cache.n0 == n0 &&
+      (cache.full || !full))
     return cache.cols;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
-      cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
+      cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b, full);
+  cache.full = full;
   // column() may have cleared a slot: the generation after the 16 lookups (they never clear
   // one another's slots: 4 consecutive times use 4 different slots)
   cache.grid = id_;
@@ -198,7 +207,7 @@ double WaveGrid::elevation(double x, double y, double t) const {
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   double eta = 0.0;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const auto& cols = stencil(m0, n0);
+  const auto& cols = stencil(m0, n0, false);
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
       eta += wt[b] * ws[a] * (*cols[static_cast<std::size_t>(4 * b + a)])[0];
@@ -217,7 +226,7 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   const std::size_t J = z_.size();
   std::unique_lock<std::mutex> lock(mutex_);
-  const std::array<const std::vector<double>*, 16> cols = stencil(m0, n0);
+  const std::array<const std::vector<double>*, 16> cols = stencil(m0, n0, true);
   double eta = 0.0;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)

@@ -71,7 +71,7 @@ class WaveGrid {
   /// The levels z_j (m), from 0 down.
   const std::vector<double>& levels() const { return z_; }
   const WaveGridSpec& spec() const { return spec_; }
-  /// Columns computed so far (each N (1 + 5 J) multiply-adds).
+  /// Full columns (all levels) computed so far (each N (1 + 5 J) multiply-adds).
   std::int64_t columns_filled() const;
 
  private:
@@ -81,11 +81,13 @@ class WaveGrid {
   };
   static constexpr int kSlots = 64;
 
-  // the column (m, n): [eta, uh(J), uz(J), ah(J), az(J), p/(rho g)(J)]; caller holds mutex_
-  const std::vector<double>& column(std::int64_t m, std::int64_t n) const;
+  // the column (m, n): [eta] or, full, [eta, uh(J), uz(J), ah(J), az(J), p/(rho g)(J)];
+  // caller holds mutex_
+  const std::vector<double>& column(std::int64_t m, std::int64_t n, bool full) const;
   // the 16 columns (m0 + a, n0 + b) at [4 b + a]; caller holds mutex_. Remembers the last
   // stencil of each thread (a Morison point asks 7 times at nearly one place).
-  const std::array<const std::vector<double>*, 16>& stencil(std::int64_t m0, std::int64_t n0) const;
+  const std::array<const std::vector<double>*, 16>& stencil(std::int64_t m0, std::int64_t n0,
+                                                            bool full) const;
 
   WaveField field_;
   WaveGridSpec spec_;
