@@ -95,35 +95,41 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
   if (!deep)
     for (double& z : z_) z = std::max(z, -depth);
   // depth factors at every level (the same expressions as WaveField::airy)
-  const std::size_t J = z_.size();
+  const std::size_t J = z_.size(), N = comps.size();
   fh_.assign(comps.size() * J, 0.0);
   fv_.assign(comps.size() * J, 0.0);
   fp_.assign(comps.size() * J, 0.0);
   for (std::size_t i = 0; i < comps.size(); ++i) {
     const double k = comps[i].k;
+    if (comps[i].amplitude == 0.0 || comps[i].omega == 0.0) continue;  // as WaveField::airy
     for (std::size_t j = 0; j < J; ++j) {
       const double z = z_[j];
       const double ekz = std::exp(k * z);
       if (deep) {
-        fh_[i * J + j] = fv_[i * J + j] = fp_[i * J + j] = ekz;
+        fh_[j * N + i] = fv_[j * N + i] = fp_[j * N + i] = ekz;
       } else {
         const double e_image = std::exp(-k * (z + 2.0 * depth));
         const double e2 = std::exp(-2.0 * k * depth);
         const double one_minus = -std::expm1(-2.0 * k * depth);
-        fh_[i * J + j] = (ekz + e_image) / one_minus;
-        fv_[i * J + j] = (ekz - e_image) / one_minus;
-        fp_[i * J + j] = (ekz + e_image) / (1.0 + e2);
+        fh_[j * N + i] = (ekz + e_image) / one_minus;
+        fv_[j * N + i] = (ekz - e_image) / one_minus;
+        fp_[j * N + i] = (ekz + e_image) / (1.0 + e2);
       }
     }
   }
 }
 
-std::int64_t WaveGrid::columns_filled() const {
+std::int64_t WaveGrid::columns_started() const {
   const std::lock_guard<std::mutex> lock(mutex_);
-  return filled_;
+  return started_;
 }
 
-const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n, bool full) const {
+std::int64_t WaveGrid::blocks_filled() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return blocks_;
+}
+
+WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
   Slot& slot = slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
   if (slot.n != n) {
     slot.columns.clear();
@@ -131,65 +137,73 @@ const std::vector<double>& WaveGrid::column(std::int64_t m, std::int64_t n, bool
     ++generation_;
   }
   auto [it, inserted] = slot.columns.try_emplace(m);
-  std::vector<double>& col = it->second;
+  Column& col = it->second;
+  if (!inserted) return col;
+  // the elevation and the phasors at (s_m, t_n): N sines and cosines
   const double s = static_cast<double>(m) * spec_.ds;
   const double t = static_cast<double>(n) * spec_.dt;
   const auto& comps = field_.components();
-  if (inserted) {
-    // the elevation alone: N cosines (the wet interval of an element asks only for it)
-    double eta = 0.0;
-    for (const auto& c : comps) eta += c.amplitude * std::cos(c.omega * t - c.k * s + c.phase);
-    col.assign(1, eta);
-  }
-  if (!full || col.size() > 1) return col;
-  // the exact sums at (s_m, t_n) for every level, without the ramp (WaveField::airy)
   const std::size_t J = z_.size();
-  col.resize(1 + 5 * J, 0.0);
-  double* uh = col.data() + 1;
-  double* uz = uh + J;
-  double* ah = uz + J;
-  double* az = ah + J;
-  double* pp = az + J;
-  for (std::size_t i = 0; i < comps.size(); ++i) {
+  const std::size_t N = comps.size();
+  col.coef.resize(5 * N);
+  for (std::size_t i = 0; i < N; ++i) {
     const auto& c = comps[i];
-    if (c.amplitude == 0.0 || c.omega == 0.0) continue;
     const double theta = c.omega * t - c.k * s + c.phase;
-    const double ac = c.amplitude * std::cos(theta);
-    const double as = c.amplitude * std::sin(theta);
+    const double ac = c.amplitude * std::cos(theta), as = c.amplitude * std::sin(theta);
+    col.eta += ac;
     const double w = c.omega, ww = c.omega * c.omega;
-    const double cuh = w * ac, cah = -ww * as, cuz = -w * as, caz = -ww * ac;
-    const double* fh = fh_.data() + i * J;
-    const double* fv = fv_.data() + i * J;
-    const double* fp = fp_.data() + i * J;
-    for (std::size_t j = 0; j < J; ++j) {
-      uh[j] += cuh * fh[j];
-      ah[j] += cah * fh[j];
-      uz[j] += cuz * fv[j];
-      az[j] += caz * fv[j];
-      pp[j] += ac * fp[j];
-    }
+    col.coef[i] = w * ac;            // u_h
+    col.coef[N + i] = -ww * as;      // du_h/dt
+    col.coef[2 * N + i] = -w * as;   // u_z
+    col.coef[3 * N + i] = -ww * ac;  // du_z/dt
+    col.coef[4 * N + i] = ac;        // p / (rho g)
   }
-  ++filled_;
+  col.values.assign(5 * J, 0.0);
+  col.filled.assign((J + kBlock - 1) / kBlock, 0);
+  ++started_;
   return col;
 }
 
-const std::array<const std::vector<double>*, 16>& WaveGrid::stencil(std::int64_t m0,
-                                                                    std::int64_t n0,
-                                                                    bool full) const {
+void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1) const {
+  const std::size_t J = z_.size();
+  const auto& comps = field_.components();
+  for (std::size_t blk = j0 / kBlock; blk <= j1 / kBlock; ++blk) {
+    if (col.filled[blk]) continue;
+    col.filled[blk] = 1;
+    ++blocks_;
+    // the exact sums at the block's levels, without the ramp (WaveField::airy): five dot
+    // products of length N per level (Eigen's vectorized reductions)
+    const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
+    const auto N = static_cast<Eigen::Index>(comps.size());
+    using CMap = Eigen::Map<const Eigen::VectorXd>;
+    const CMap c_uh(col.coef.data(), N), c_ah(col.coef.data() + N, N),
+        c_uz(col.coef.data() + 2 * N, N), c_az(col.coef.data() + 3 * N, N),
+        c_p(col.coef.data() + 4 * N, N);
+    for (std::size_t j = lo; j < hi; ++j) {
+      const CMap fh(fh_.data() + j * static_cast<std::size_t>(N), N);
+      const CMap fv(fv_.data() + j * static_cast<std::size_t>(N), N);
+      const CMap fp(fp_.data() + j * static_cast<std::size_t>(N), N);
+      col.values[j] = fh.dot(c_uh);
+      col.values[J + j] = fv.dot(c_uz);
+      col.values[2 * J + j] = fh.dot(c_ah);
+      col.values[3 * J + j] = fv.dot(c_az);
+      col.values[4 * J + j] = fp.dot(c_p);
+    }
+  }
+}
+
+const std::array<WaveGrid::Column*, 16>& WaveGrid::stencil(std::int64_t m0, std::int64_t n0) const {
   struct Cache {
     std::uint64_t grid = 0, generation = 0;
     std::int64_t m0 = 0, n0 = 0;
-    bool full = false;
-    std::array<const std::vector<double>*, 16> cols{};
+    std::array<Column*, 16> cols{};
   };
   thread_local Cache cache;
-  if (cache.grid == id_ && cache.generation == generation_ && cache.m0 == m0 && cache.n0 == n0 &&
-      (cache.full || !full))
+  if (cache.grid == id_ && cache.generation == generation_ && cache.m0 == m0 && cache.n0 == n0)
     return cache.cols;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
-      cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b, full);
-  cache.full = full;
+      cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
   // column() may have cleared a slot: the generation after the 16 lookups (they never clear
   // one another's slots: 4 consecutive times use 4 different slots)
   cache.grid = id_;
@@ -207,10 +221,10 @@ double WaveGrid::elevation(double x, double y, double t) const {
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   double eta = 0.0;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const auto& cols = stencil(m0, n0, false);
+  const auto& cols = stencil(m0, n0);
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
-      eta += wt[b] * ws[a] * (*cols[static_cast<std::size_t>(4 * b + a)])[0];
+      eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
   return ramp * eta;
 }
 
@@ -226,11 +240,11 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   const std::size_t J = z_.size();
   std::unique_lock<std::mutex> lock(mutex_);
-  const std::array<const std::vector<double>*, 16> cols = stencil(m0, n0, true);
+  const std::array<Column*, 16> cols = stencil(m0, n0);
   double eta = 0.0;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
-      eta += wt[b] * ws[a] * (*cols[static_cast<std::size_t>(4 * b + a)])[0];
+      eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
   eta *= ramp;
   if (p.z() > eta) return FluidKinematics{};
   const double depth = field_.depth();
@@ -258,7 +272,9 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a) {
       const double wab = wt[b] * ws[a];
-      const double* col = cols[static_cast<std::size_t>(4 * b + a)]->data() + 1 + j0;
+      Column& c = *cols[static_cast<std::size_t>(4 * b + a)];
+      fill_levels(c, static_cast<std::size_t>(j0), static_cast<std::size_t>(j0) + 3);
+      const double* col = c.values.data() + j0;
       for (std::size_t q = 0; q < 5; ++q) {
         const double* cq = col + q * J;
         v[q] += wab * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);

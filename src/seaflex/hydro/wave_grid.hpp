@@ -71,33 +71,48 @@ class WaveGrid {
   /// The levels z_j (m), from 0 down.
   const std::vector<double>& levels() const { return z_; }
   const WaveGridSpec& spec() const { return spec_; }
-  /// Full columns (all levels) computed so far (each N (1 + 5 J) multiply-adds).
-  std::int64_t columns_filled() const;
+  /// Work done so far: columns started (N sines and cosines each) and blocks of kBlock levels
+  /// filled (N kBlock 5 multiply-adds each).
+  std::int64_t columns_started() const;
+  std::int64_t blocks_filled() const;
+
+  /// Levels per lazily filled block of a column.
+  static constexpr int kBlock = 4;
 
  private:
+  // one station and time: eta, the components' coefficients, and the Airy values
+  // [uh(J), uz(J), ah(J), az(J), p/(rho g)(J)], filled by blocks of levels
+  struct Column {
+    double eta = 0.0;
+    // [q N + i]: w a cos, -w^2 a sin, -w a sin, -w^2 a cos, a cos (of theta_i), the factors
+    // of f_h, f_h, f_v, f_v, f_p in u_h, du_h/dt, u_z, du_z/dt, p/(rho g)
+    std::vector<double> coef;
+    std::vector<double> values;
+    std::vector<char> filled;  // per block
+  };
   struct Slot {
     std::int64_t n = INT64_MIN;
-    std::unordered_map<std::int64_t, std::vector<double>> columns;
+    std::unordered_map<std::int64_t, Column> columns;
   };
   static constexpr int kSlots = 64;
 
-  // the column (m, n): [eta] or, full, [eta, uh(J), uz(J), ah(J), az(J), p/(rho g)(J)];
-  // caller holds mutex_
-  const std::vector<double>& column(std::int64_t m, std::int64_t n, bool full) const;
+  // the column (m, n), with its elevation and coefficients; caller holds mutex_
+  Column& column(std::int64_t m, std::int64_t n) const;
+  // fills the blocks of levels j0 .. j1 of col; caller holds mutex_
+  void fill_levels(Column& col, std::size_t j0, std::size_t j1) const;
   // the 16 columns (m0 + a, n0 + b) at [4 b + a]; caller holds mutex_. Remembers the last
   // stencil of each thread (a Morison point asks 7 times at nearly one place).
-  const std::array<const std::vector<double>*, 16>& stencil(std::int64_t m0, std::int64_t n0,
-                                                            bool full) const;
+  const std::array<Column*, 16>& stencil(std::int64_t m0, std::int64_t n0) const;
 
   WaveField field_;
   WaveGridSpec spec_;
   double cos_b_ = 1.0, sin_b_ = 0.0;
   std::vector<double> z_;
-  // depth factors f_h, f_v, f_p of component i at level j: [i * J + j]
+  // depth factors f_h, f_v, f_p of component i at level j: [j * N + i]
   std::vector<double> fh_, fv_, fp_;
   mutable std::mutex mutex_;
   mutable std::vector<Slot> slots_;
-  mutable std::int64_t filled_ = 0;
+  mutable std::int64_t started_ = 0, blocks_ = 0;
   mutable std::uint64_t generation_ = 0;  // counts slot clearings (they free columns)
   std::uint64_t id_;                      // this grid, for the threads' stencil caches
 };
