@@ -6,8 +6,11 @@
 //   s = x cos b + y sin b, z and t only. The grid holds, at stations s_m = m ds (every
 //   integer m, filled when first needed), levels z_j in [-d, 0] and times t_n = n dt, the
 //   exact sums (without the ramp) of eta(s, t) and of the Airy velocity, local acceleration
-//   and dynamic pressure at z_j: one column (s_m, t_n) costs N (1 + 5 J) multiply-adds
-//   (J levels), once per run.
+//   and dynamic pressure at z_j. A column (s_m, t_n) costs N sines and cosines when first
+//   asked for (its elevation), and 5 N multiply-adds per level, filled by blocks of kBlock
+//   levels as points need them; each once per run. The cost per evaluation (16 columns x 4
+//   levels x 5 values) does not depend on N; the filling grows with N times the grid nodes
+//   the line visits (one new time sample per dt).
 // - Levels: z_0 = 0, z_{j+1} = z_j - (dz + dz_growth |z_j|), the last one at -d (deep
 //   water: at -21 / k_min, where e^{k_min z} < 1e-9; below it the exact sum is used): fine
 //   at the surface where the shortest components live, coarse at depth where only the long
@@ -28,7 +31,7 @@
 //   whole JONSWAP sea (Hs 6 m, Tp 10 s, 200 components) within 1e-4 of the RMS velocity,
 //   RMS elevation and rho g RMS elevation, 2e-4 of the RMS acceleration, measured at 1800
 //   points between the nodes, with and without stretching (tests/unit/test_wave_grid.cpp).
-// Columns live in a ring of 64 time slots (memory ~ 64 x columns used x (1 + 5 J) doubles);
+// Columns live in a ring of 64 time slots (memory ~ 64 x columns used x (5 N + 5 J) doubles);
 // evaluations must lie within 60 dt of each other (a time loop's are). Thread-safe: columns
 // are filled and read under a mutex.
 #pragma once
