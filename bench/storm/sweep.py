@@ -81,8 +81,8 @@ def accuracy(args):
     print("|---|---|---|---|")
     for key, label in (("top_tension", "max top effective tension (N)"),
                        ("moment", "max bending moment (N m)"),
-                       ("joint_fz", "max upper flex joint |fz| (N)"),
-                       ("eta_max", "max |wave elevation| at the riser (m)")):
+                       ("joint_fz", "max upper flex joint abs(fz) (N)"),
+                       ("eta_max", "max abs(wave elevation) at the riser (m)")):
         a, b = res["exact"][key], res["grid"][key]
         print(f"| {label} | {a:.6g} | {b:.6g} | {(b - a) / a:.2e} |")
 
