@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <string>
@@ -85,6 +86,12 @@ Errors compare_off_grid(const WaveField& exact, const WaveGrid& grid, double zmi
   return e;
 }
 
+// the measured errors, for docs/verification.md section 25
+void report(const Errors& e, double su, double sa, double se) {
+  std::printf("grid error / scale: eta %.2e, u %.2e, a %.2e, p %.2e (%d wet points)\n", e.eta / se,
+              e.u / su, e.a / sa, e.p / (kRho * kG * se), e.wet);
+}
+
 }  // namespace
 
 // Between the nodes: the documented bound (wave_grid.hpp, docs/model-format.md 4.2) with the
@@ -98,6 +105,7 @@ TEST(WaveGrid, MatchesExactSumBetweenNodesWithStretching) {
   double su, sa, se;
   surface_sigmas(exact, su, sa, se);
   const Errors e = compare_off_grid(exact, grid, -290.0);
+  report(e, su, sa, se);
   EXPECT_GT(e.wet, 1200);
   EXPECT_LE(e.mismatched_wet, 2);
   EXPECT_LT(e.eta, 1e-4 * se) << e.eta / se;
@@ -112,6 +120,7 @@ TEST(WaveGrid, MatchesExactSumBetweenNodesWithoutStretching) {
   double su, sa, se;
   surface_sigmas(exact, su, sa, se);
   const Errors e = compare_off_grid(exact, grid, -290.0);
+  report(e, su, sa, se);
   EXPECT_GT(e.wet, 1200);
   EXPECT_LT(e.u, 1e-4 * su) << e.u / su;
   EXPECT_LT(e.a, 2e-4 * sa) << e.a / sa;
@@ -129,6 +138,7 @@ TEST(WaveGrid, MatchesExactSumInDeepWaterAndBelowTheGrid) {
   double su, sa, se;
   surface_sigmas(exact, su, sa, se);
   const Errors e = compare_off_grid(exact, grid, -300.0);
+  report(e, su, sa, se);
   EXPECT_LT(e.u, 1e-4 * su) << e.u / su;
   EXPECT_LT(e.a, 2e-4 * sa) << e.a / sa;
   // far below the grid the exact sum is used: identical
