@@ -12,11 +12,15 @@ independently of seaflex (DNV-RP-C205 eq. 3.5.5):
   * the same seed gives the identical record (bit for bit in the CSV), another seed not.
 The body is a vessel held still (motion constant_velocity 0): only the environment of the
 storm file is used, so the test takes a few seconds.
+Also `seaflex bench` of the storm itself for 2 s: it reports Newton iterations per step and
+the split of the assembly into wave kinematics and other forces (not a timing assertion:
+only that the parts are there, positive, and add up to the assembly time).
 
     test_storm_waves.py SEAFLEX SOURCE_DIR
 """
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -111,6 +115,21 @@ def main(seaflex, source):
           (eta.var(), m0, 100 * (eta.var() / m0 - 1)))
     if abs(eta.var() / m0 - 1) > 0.04:  # 2 % in Hs is 4 % in variance
         failures.append("variance %.5f not within 4 %% of m0 %.5f" % (eta.var(), m0))
+    out = subprocess.run([seaflex, "bench", os.path.join(source, "bench", "storm", "storm_n100.yaml"),
+                          "--duration", "2"], capture_output=True, text=True, check=True).stdout
+    asm = re.search(r"wall time: assembly ([0-9.]+) s", out)
+    split = re.search(r"assembly split: wave kinematics ([0-9.]+) s \([0-9]+ %\), other forces "
+                      r"and tangents ([0-9.-]+) s", out)
+    its = re.search(r"steps: 20 accepted, 0 rejected, smallest 0.1 s; ([0-9.]+) iterations per "
+                    r"step", out)
+    if not (asm and split and its):
+        failures.append("seaflex bench output lacks the split or the iterations:\n" + out)
+    else:
+        kin, other = float(split.group(1)), float(split.group(2))
+        if not (kin > 0 and other > 0 and abs(kin + other - float(asm.group(1))) <= 2e-3):
+            failures.append("bench split %g + %g s against assembly %s s" % (kin, other, asm.group(1)))
+        if not float(its.group(1)) >= 1:
+            failures.append("iterations per step %s" % its.group(1))
     if text1 != text2:
         failures.append("two runs with seed 1 differ")
     if text1 == text3:
