@@ -218,10 +218,48 @@ TEST(WaveGrid, RejectsBadSpacings) {
   s.dz_growth = 0.0;
   EXPECT_EQ(message(s),
             "dz: more than 20000 levels over the depth of 290 m: increase dz or dz_growth");
+  s = WaveGridSpec{};
+  s.dz = 0.02;
+  s.dz_growth = 0.0;
+  const WaveField many = storm(290.0, true, 2000);
+  try {
+    WaveGrid g(many, s);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "2000 components x 14501 levels is more than 2e+07 depth factors: use fewer "
+              "components or larger dz, dz_growth");
+  }
   std::vector<WaveComponent> two = exact.components();
   two[1].direction += 0.1;
   EXPECT_THROW(WaveGrid(WaveField(290.0, kG, kRho, two, Ramp{}), WaveGridSpec{}),
                std::invalid_argument);
+}
+
+// The memory cap: points along a 2 km line at 4 times need ~32,000 columns; with room for 64
+// the grid stores no more than that and gives the other points the exact sum, so every point
+// is within the bound of MatchesExactSumBetweenNodesWithStretching and many are exactly equal.
+TEST(WaveGrid, MemoryCapFallsBackToTheExactSum) {
+  const WaveField exact = storm(290.0, true, 50);
+  WaveGridSpec spec;
+  spec.max_bytes = 1.0;  // the floor: 64 columns
+  const WaveGrid grid(exact, spec);
+  EXPECT_EQ(grid.max_columns(), 64);
+  double su, sa, se;
+  surface_sigmas(exact, su, sa, se);
+  int equal = 0, points = 0;
+  for (const double t : {200.0, 200.05, 200.1, 200.15}) {
+    for (double x = 0.0; x <= 2000.0; x += 0.5) {
+      const Vec3 p(x, 0.0, -10.0);
+      const FluidKinematics kx = exact.kinematics(p, t), kg = grid.kinematics(p, t);
+      ++points;
+      equal += kx.velocity == kg.velocity;
+      EXPECT_LT((kg.velocity - kx.velocity).norm(), 1e-4 * su) << x << " " << t;
+      EXPECT_LE(grid.columns_stored(), grid.max_columns());
+    }
+  }
+  EXPECT_GT(equal, points / 2);  // most fell back
+  EXPECT_LT(equal, points);      // some were interpolated
 }
 
 namespace {

@@ -94,6 +94,16 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
   if (z_.size() < 4) z_ = {0.0, -bottom / 3.0, -2.0 * bottom / 3.0, -bottom};  // a cubic: 4
   if (!deep)
     for (double& z : z_) z = std::max(z, -depth);
+  if (static_cast<double>(comps.size()) * static_cast<double>(z_.size()) > kMaxFactors)
+    throw std::invalid_argument(fmt::format(
+        "{} components x {} levels is more than {:g} depth factors: use fewer components or "
+        "larger dz, dz_growth",
+        comps.size(), z_.size(), kMaxFactors));
+  const double column_bytes =
+      8.0 * (1.0 + 5.0 * static_cast<double>(comps.size()) + 5.0 * static_cast<double>(z_.size())) +
+      128.0;  // the map node, the vectors' headers
+  max_columns_ =
+      static_cast<std::int64_t>(std::max(64.0, std::min(spec.max_bytes / column_bytes, 1e12)));
   // depth factors at every level (the same expressions as WaveField::airy)
   const std::size_t J = z_.size(), N = comps.size();
   fh_.assign(comps.size() * J, 0.0);
@@ -129,9 +139,15 @@ std::int64_t WaveGrid::blocks_filled() const {
   return blocks_;
 }
 
+std::int64_t WaveGrid::columns_stored() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return stored_;
+}
+
 WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
-  Slot& slot = slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
+  Slot& slot = slot_of(n);
   if (slot.n != n) {
+    stored_ -= static_cast<std::int64_t>(slot.columns.size());
     slot.columns.clear();
     slot.n = n;
     ++generation_;
@@ -161,6 +177,7 @@ WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
   col.values.assign(5 * J, 0.0);
   col.filled.assign((J + kBlock - 1) / kBlock, 0);
   ++started_;
+  ++stored_;
   return col;
 }
 
@@ -192,7 +209,7 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1) const {
   }
 }
 
-const std::array<WaveGrid::Column*, 16>& WaveGrid::stencil(std::int64_t m0, std::int64_t n0) const {
+const std::array<WaveGrid::Column*, 16>* WaveGrid::stencil(std::int64_t m0, std::int64_t n0) const {
   struct Cache {
     std::uint64_t grid = 0, generation = 0;
     std::int64_t m0 = 0, n0 = 0;
@@ -200,7 +217,31 @@ const std::array<WaveGrid::Column*, 16>& WaveGrid::stencil(std::int64_t m0, std:
   };
   thread_local Cache cache;
   if (cache.grid == id_ && cache.generation == generation_ && cache.m0 == m0 && cache.n0 == n0)
-    return cache.cols;
+    return &cache.cols;
+  // the memory cap: the columns this stencil would add, less those a cleared slot frees
+  const auto stored_after = [&] {
+    std::int64_t after = stored_;
+    for (int b = 0; b < 4; ++b) {
+      const Slot& slot = slot_of(n0 + b);
+      if (slot.n != n0 + b) {
+        after += 4 - static_cast<std::int64_t>(slot.columns.size());
+        continue;
+      }
+      for (int a = 0; a < 4; ++a) after += slot.columns.count(m0 + a) ? 0 : 1;
+    }
+    return after;
+  };
+  if (stored_after() > max_columns_) {
+    // over the cap: first drop the times other than the stencil's and the next few
+    for (Slot& slot : slots_)
+      if (!slot.columns.empty() && (slot.n < n0 || slot.n > n0 + 7)) {
+        stored_ -= static_cast<std::int64_t>(slot.columns.size());
+        slot.columns.clear();
+        slot.n = INT64_MIN;
+        ++generation_;
+      }
+    if (stored_after() > max_columns_) return nullptr;
+  }
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
       cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
@@ -210,7 +251,7 @@ const std::array<WaveGrid::Column*, 16>& WaveGrid::stencil(std::int64_t m0, std:
   cache.generation = generation_;
   cache.m0 = m0;
   cache.n0 = n0;
-  return cache.cols;
+  return &cache.cols;
 }
 
 double WaveGrid::elevation(double x, double y, double t) const {
@@ -221,7 +262,9 @@ double WaveGrid::elevation(double x, double y, double t) const {
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   double eta = 0.0;
   const std::lock_guard<std::mutex> lock(mutex_);
-  const auto& cols = stencil(m0, n0);
+  const auto* stencil_cols = stencil(m0, n0);
+  if (!stencil_cols) return field_.elevation(x, y, t);  // over the memory cap: exact
+  const auto& cols = *stencil_cols;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
       eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
@@ -240,7 +283,12 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
   const std::size_t J = z_.size();
   std::unique_lock<std::mutex> lock(mutex_);
-  const std::array<Column*, 16> cols = stencil(m0, n0);
+  const auto* stencil_cols = stencil(m0, n0);
+  if (!stencil_cols) {  // over the memory cap: the exact sum
+    lock.unlock();
+    return field_.kinematics(p, t);
+  }
+  const std::array<Column*, 16> cols = *stencil_cols;
   double eta = 0.0;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)

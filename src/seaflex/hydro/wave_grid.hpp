@@ -31,9 +31,13 @@
 //   whole JONSWAP sea (Hs 6 m, Tp 10 s, 200 components) within 1e-4 of the RMS velocity,
 //   RMS elevation and rho g RMS elevation, 2e-4 of the RMS acceleration, measured at 1800
 //   points between the nodes, with and without stretching (tests/unit/test_wave_grid.cpp).
-// Columns live in a ring of 64 time slots (memory ~ 64 x columns used x (5 N + 5 J) doubles);
-// evaluations must lie within 60 dt of each other (a time loop's are). Thread-safe: columns
-// are filled and read under a mutex.
+// Columns live in a ring of 64 time slots (memory ~ 64 x stations visited x (5 N + 5 J)
+// doubles, a few MB for a riser); evaluations more than 60 dt apart recompute columns (a time
+// loop's are not). Memory is capped at spec.max_bytes (256 MB): a point whose columns would
+// exceed it (a line kilometres long across the waves at a fine ds) gets the exact sum, so the
+// grid never makes a run fail or swap, only slower. Thread-safe: columns are filled and read
+// under a mutex; their values do not depend on the order or the thread that fills them, so
+// the results are identical for any number of threads (below the cap).
 #pragma once
 
 #include <array>
@@ -52,18 +56,25 @@ struct WaveGridSpec {
   double dz = 0.25;        ///< (m) level spacing at the mean surface, > 0
   double dz_growth = 0.1;  ///< (-) the spacing grows by this times the depth, >= 0
   double dt = 0.1;         ///< (s) time sample spacing, > 0
+  /// (bytes) the most memory the stored columns may take; a point whose columns would
+  /// exceed it gets the exact sum instead (correct, only slower). Not an input key.
+  double max_bytes = 256e6;
 };
 
 class WaveGrid {
  public:
-  /// The most levels the grid accepts (a guard against a resource blow-up).
+  /// The most levels the grid accepts, and the most depth factors (components x levels):
+  /// guards against a resource blow-up.
   static constexpr int kMaxLevels = 20000;
+  static constexpr double kMaxFactors = 2e7;
 
   /// field: the exact sea, long-crested (all components with one direction), without a
   /// grid of its own. Throws std::invalid_argument naming the field: "ds must be > 0, got
   /// 0" (same for dz, dt), "dz_growth must be >= 0, got -1", "dz: 25000 levels over the
-  /// depth of 1000 m, more than 20000: increase dz or dz_growth", "the components travel in
-  /// more than one direction: grid kinematics need a long-crested sea".
+  /// depth of 1000 m, more than 20000: increase dz or dz_growth", "100000 components x 51
+  /// levels is more than 2e7 depth factors: use fewer components or larger dz, dz_growth",
+  /// "the components travel in more than one direction: grid kinematics need a long-crested
+  /// sea".
   WaveGrid(WaveField field, WaveGridSpec spec);
 
   /// As WaveField::elevation, interpolated.
@@ -77,6 +88,9 @@ class WaveGrid {
   /// Work done so far: columns started (N sines and cosines each) and blocks of kBlock levels
   /// filled (N kBlock 5 multiply-adds each).
   std::int64_t columns_started() const;
+  /// Columns stored now, and the most that may be (spec().max_bytes).
+  std::int64_t columns_stored() const;
+  std::int64_t max_columns() const { return max_columns_; }
   std::int64_t blocks_filled() const;
 
   /// Levels per lazily filled block of a column.
@@ -103,9 +117,13 @@ class WaveGrid {
   Column& column(std::int64_t m, std::int64_t n) const;
   // fills the blocks of levels j0 .. j1 of col; caller holds mutex_
   void fill_levels(Column& col, std::size_t j0, std::size_t j1) const;
-  // the 16 columns (m0 + a, n0 + b) at [4 b + a]; caller holds mutex_. Remembers the last
-  // stencil of each thread (a Morison point asks 7 times at nearly one place).
-  const std::array<Column*, 16>& stencil(std::int64_t m0, std::int64_t n0) const;
+  // the 16 columns (m0 + a, n0 + b) at [4 b + a], or nullptr when storing the missing ones
+  // would exceed max_columns_; caller holds mutex_. Remembers the last stencil of each thread
+  // (a Morison point asks 7 times at nearly one place).
+  const std::array<Column*, 16>* stencil(std::int64_t m0, std::int64_t n0) const;
+  Slot& slot_of(std::int64_t n) const {
+    return slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
+  }
 
   WaveField field_;
   WaveGridSpec spec_;
@@ -115,7 +133,8 @@ class WaveGrid {
   std::vector<double> fh_, fv_, fp_;
   mutable std::mutex mutex_;
   mutable std::vector<Slot> slots_;
-  mutable std::int64_t started_ = 0, blocks_ = 0;
+  mutable std::int64_t started_ = 0, blocks_ = 0, stored_ = 0;
+  std::int64_t max_columns_ = 0;
   mutable std::uint64_t generation_ = 0;  // counts slot clearings (they free columns)
   std::uint64_t id_;                      // this grid, for the threads' stencil caches
 };
