@@ -130,17 +130,17 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
 }
 
 std::int64_t WaveGrid::columns_started() const {
-  const std::lock_guard<std::mutex> lock(mutex_);
+  const std::lock_guard<std::shared_mutex> lock(mutex_);
   return started_;
 }
 
 std::int64_t WaveGrid::blocks_filled() const {
-  const std::lock_guard<std::mutex> lock(mutex_);
+  const std::lock_guard<std::shared_mutex> lock(mutex_);
   return blocks_;
 }
 
 std::int64_t WaveGrid::columns_stored() const {
-  const std::lock_guard<std::mutex> lock(mutex_);
+  const std::lock_guard<std::shared_mutex> lock(mutex_);
   return stored_;
 }
 
@@ -209,15 +209,17 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1) const {
   }
 }
 
+thread_local WaveGrid::StencilCache WaveGrid::t_cache_;
+
+const std::array<WaveGrid::Column*, 16>* WaveGrid::cached_stencil(std::int64_t m0,
+                                                                  std::int64_t n0) const {
+  const StencilCache& c = t_cache_;
+  if (c.grid == id_ && c.generation == generation_ && c.m0 == m0 && c.n0 == n0) return &c.cols;
+  return nullptr;
+}
+
 const std::array<WaveGrid::Column*, 16>* WaveGrid::stencil(std::int64_t m0, std::int64_t n0) const {
-  struct Cache {
-    std::uint64_t grid = 0, generation = 0;
-    std::int64_t m0 = 0, n0 = 0;
-    std::array<Column*, 16> cols{};
-  };
-  thread_local Cache cache;
-  if (cache.grid == id_ && cache.generation == generation_ && cache.m0 == m0 && cache.n0 == n0)
-    return &cache.cols;
+  if (const auto* hit = cached_stencil(m0, n0)) return hit;
   // the memory cap: the columns this stencil would add, less those a cleared slot frees
   const auto stored_after = [&] {
     std::int64_t after = stored_;
@@ -242,6 +244,7 @@ const std::array<WaveGrid::Column*, 16>* WaveGrid::stencil(std::int64_t m0, std:
       }
     if (stored_after() > max_columns_) return nullptr;
   }
+  StencilCache& cache = t_cache_;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
       cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
@@ -260,15 +263,77 @@ double WaveGrid::elevation(double x, double y, double t) const {
   std::array<double, 4> ws{}, wt{};
   const std::int64_t m0 = lattice_stencil(x * cos_b_ + y * sin_b_, spec_.ds, ws);
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
+  const auto sum = [&](const std::array<Column*, 16>& cols) {
+    double eta = 0.0;
+    for (int b = 0; b < 4; ++b)
+      for (int a = 0; a < 4; ++a)
+        eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
+    return ramp * eta;
+  };
+  {
+    // the common case, columns in place: shared with the other threads
+    const std::shared_lock<std::shared_mutex> lock(mutex_);
+    if (const auto* cols = cached_stencil(m0, n0)) return sum(*cols);
+  }
+  const std::unique_lock<std::shared_mutex> lock(mutex_);
+  const auto* cols = stencil(m0, n0);
+  if (!cols) return field_.elevation(x, y, t);  // over the memory cap: exact
+  return sum(*cols);
+}
+
+WaveGrid::Outcome WaveGrid::evaluate(const std::array<Column*, 16>& cols,
+                                     const std::array<double, 4>& ws,
+                                     const std::array<double, 4>& wt, const Vec3& p, double ramp,
+                                     bool may_fill, FluidKinematics& out) const {
+  const std::size_t J = z_.size();
   double eta = 0.0;
-  const std::lock_guard<std::mutex> lock(mutex_);
-  const auto* stencil_cols = stencil(m0, n0);
-  if (!stencil_cols) return field_.elevation(x, y, t);  // over the memory cap: exact
-  const auto& cols = *stencil_cols;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a)
       eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
-  return ramp * eta;
+  eta *= ramp;
+  if (p.z() > eta) {
+    out = FluidKinematics{};
+    return Outcome::kDone;
+  }
+  const double depth = field_.depth();
+  const bool deep = std::isinf(depth);
+  double z = p.z();
+  if (!deep && z < -depth) z = -depth;
+  double z_eval;
+  if (field_.wheeler_stretching()) {
+    // Wheeler (1970), as WaveField::kinematics
+    z_eval = deep ? z - eta : depth * (z - eta) / (depth + eta);
+  } else {
+    z_eval = std::min(z, 0.0);
+  }
+  if (z_eval < z_.back()) return Outcome::kExact;  // deep water below the grid
+  z_eval = std::min(z_eval, 0.0);
+  // the level interval z_j >= z_eval >= z_{j+1} (levels descend), then 4 levels around it
+  const auto it = std::lower_bound(z_.begin(), z_.end(), z_eval, std::greater<double>());
+  const std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, (it - z_.begin()) - 1);
+  const auto j0 = static_cast<std::size_t>(
+      std::clamp<std::ptrdiff_t>(j - 1, 0, static_cast<std::ptrdiff_t>(J) - 4));
+  if (!may_fill)
+    for (const Column* c : cols)
+      if (!c->filled[j0 / kBlock] || !c->filled[(j0 + 3) / kBlock]) return Outcome::kFill;
+  const std::array<double, 4> wz = lagrange4(z_.data() + j0, z_eval);
+  std::array<double, 5> v{};
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) {
+      const double wab = wt[b] * ws[a];
+      Column& c = *cols[static_cast<std::size_t>(4 * b + a)];
+      if (may_fill) fill_levels(c, j0, j0 + 3);
+      const double* col = c.values.data() + j0;
+      for (std::size_t q = 0; q < 5; ++q) {
+        const double* cq = col + q * J;
+        v[q] += wab * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);
+      }
+    }
+  out.velocity = ramp * Vec3(v[0] * cos_b_, v[0] * sin_b_, v[1]);
+  out.acceleration = ramp * Vec3(v[2] * cos_b_, v[2] * sin_b_, v[3]);
+  out.dynamic_pressure = ramp * field_.rho() * field_.g() * v[4];
+  out.wet = true;
+  return Outcome::kDone;
 }
 
 FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
@@ -281,60 +346,21 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   std::array<double, 4> ws{}, wt{};
   const std::int64_t m0 = lattice_stencil(p.x() * cos_b_ + p.y() * sin_b_, spec_.ds, ws);
   const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
-  const std::size_t J = z_.size();
-  std::unique_lock<std::mutex> lock(mutex_);
-  const auto* stencil_cols = stencil(m0, n0);
-  if (!stencil_cols) {  // over the memory cap: the exact sum
-    lock.unlock();
-    return field_.kinematics(p, t);
-  }
-  const std::array<Column*, 16> cols = *stencil_cols;
-  double eta = 0.0;
-  for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a)
-      eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
-  eta *= ramp;
-  if (p.z() > eta) return FluidKinematics{};
-  const double depth = field_.depth();
-  const bool deep = std::isinf(depth);
-  double z = p.z();
-  if (!deep && z < -depth) z = -depth;
-  double z_eval;
-  if (field_.wheeler_stretching()) {
-    // Wheeler (1970), as WaveField::kinematics
-    z_eval = deep ? z - eta : depth * (z - eta) / (depth + eta);
-  } else {
-    z_eval = std::min(z, 0.0);
-  }
-  if (z_eval < z_.back()) {  // deep water below the grid: the exact sum
-    lock.unlock();
-    return field_.kinematics(p, t);
-  }
-  z_eval = std::min(z_eval, 0.0);
-  // the level interval z_j >= z_eval >= z_{j+1} (levels descend), then 4 levels around it
-  const auto it = std::lower_bound(z_.begin(), z_.end(), z_eval, std::greater<double>());
-  std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, (it - z_.begin()) - 1);
-  std::ptrdiff_t j0 = std::clamp<std::ptrdiff_t>(j - 1, 0, static_cast<std::ptrdiff_t>(J) - 4);
-  const std::array<double, 4> wz = lagrange4(z_.data() + j0, z_eval);
-  std::array<double, 5> v{};
-  for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) {
-      const double wab = wt[b] * ws[a];
-      Column& c = *cols[static_cast<std::size_t>(4 * b + a)];
-      fill_levels(c, static_cast<std::size_t>(j0), static_cast<std::size_t>(j0) + 3);
-      const double* col = c.values.data() + j0;
-      for (std::size_t q = 0; q < 5; ++q) {
-        const double* cq = col + q * J;
-        v[q] += wab * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);
-      }
-    }
-  lock.unlock();
   FluidKinematics out;
-  out.velocity = ramp * Vec3(v[0] * cos_b_, v[0] * sin_b_, v[1]);
-  out.acceleration = ramp * Vec3(v[2] * cos_b_, v[2] * sin_b_, v[3]);
-  out.dynamic_pressure = ramp * field_.rho() * field_.g() * v[4];
-  out.wet = true;
-  return out;
+  Outcome outcome = Outcome::kFill;
+  {
+    // the common case, columns and levels in place: shared with the other threads
+    const std::shared_lock<std::shared_mutex> lock(mutex_);
+    if (const auto* cols = cached_stencil(m0, n0))
+      outcome = evaluate(*cols, ws, wt, p, ramp, false, out);
+  }
+  if (outcome == Outcome::kFill) {
+    const std::unique_lock<std::shared_mutex> lock(mutex_);
+    const auto* cols = stencil(m0, n0);
+    outcome = cols ? evaluate(*cols, ws, wt, p, ramp, true, out) : Outcome::kExact;
+  }
+  // below the grid in deep water, or over the memory cap: the exact sum
+  return outcome == Outcome::kExact ? field_.kinematics(p, t) : out;
 }
 
 }  // namespace seaflex::hydro

@@ -35,14 +35,16 @@
 // doubles, a few MB for a riser); evaluations more than 60 dt apart recompute columns (a time
 // loop's are not). Memory is capped at spec.max_bytes (256 MB): a point whose columns would
 // exceed it (a line kilometres long across the waves at a fine ds) gets the exact sum, so the
-// grid never makes a run fail or swap, only slower. Thread-safe: columns are filled and read
-// under a mutex; their values do not depend on the order or the thread that fills them, so
-// the results are identical for any number of threads (below the cap).
+// grid never makes a run fail or swap, only slower. Thread-safe: columns are read under a
+// shared lock and created and filled under an exclusive one; their values do not depend on the
+// order or the thread that fills them, so the results are identical for any number of threads
+// (below the cap).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <mutex>
+#include <shared_mutex>
 #include <unordered_map>
 #include <vector>
 
@@ -118,9 +120,25 @@ class WaveGrid {
   // fills the blocks of levels j0 .. j1 of col; caller holds mutex_
   void fill_levels(Column& col, std::size_t j0, std::size_t j1) const;
   // the 16 columns (m0 + a, n0 + b) at [4 b + a], or nullptr when storing the missing ones
-  // would exceed max_columns_; caller holds mutex_. Remembers the last stencil of each thread
-  // (a Morison point asks 7 times at nearly one place).
+  // would exceed max_columns_; caller holds mutex_ exclusively. Remembered per thread.
   const std::array<Column*, 16>* stencil(std::int64_t m0, std::int64_t n0) const;
+  // this thread's remembered stencil if it is (m0, n0) and still valid, else nullptr; caller
+  // holds mutex_ (shared is enough)
+  const std::array<Column*, 16>* cached_stencil(std::int64_t m0, std::int64_t n0) const;
+  // the last stencil of each thread (a Morison point asks 7 times at nearly one place)
+  struct StencilCache {
+    std::uint64_t grid = 0, generation = 0;
+    std::int64_t m0 = 0, n0 = 0;
+    std::array<Column*, 16> cols{};
+  };
+  static thread_local StencilCache t_cache_;
+  enum class Outcome { kDone, kFill, kExact };
+  // the point p from the 16 columns: kDone (out set), kExact (below the grid: use the exact
+  // sum), kFill (a level block is missing and may_fill is false: retry exclusively); caller
+  // holds mutex_, exclusively when may_fill
+  Outcome evaluate(const std::array<Column*, 16>& cols, const std::array<double, 4>& ws,
+                   const std::array<double, 4>& wt, const Vec3& p, double ramp, bool may_fill,
+                   FluidKinematics& out) const;
   Slot& slot_of(std::int64_t n) const {
     return slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
   }
@@ -131,7 +149,7 @@ class WaveGrid {
   std::vector<double> z_;
   // depth factors f_h, f_v, f_p of component i at level j: [j * N + i]
   std::vector<double> fh_, fv_, fp_;
-  mutable std::mutex mutex_;
+  mutable std::shared_mutex mutex_;
   mutable std::vector<Slot> slots_;
   mutable std::int64_t started_ = 0, blocks_ = 0, stored_ = 0;
   std::int64_t max_columns_ = 0;
