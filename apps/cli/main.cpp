@@ -268,6 +268,11 @@ int cmd_bench(const std::string& file, double duration) {
       "{:.3f} s ({:.0f} %), other {:.3f} s ({:.0f} %)\n",
       st.assembly_s, 100 * st.assembly_s / wall, st.factorize_s, 100 * st.factorize_s / wall,
       st.solve_s, 100 * st.solve_s / wall, other, 100 * other / wall);
+  fmt::print(
+      "assembly split: wave kinematics {:.3f} s ({:.0f} %), other forces and tangents {:.3f} s "
+      "({:.0f} %)\n",
+      b.wave_kinematics_s, 100 * b.wave_kinematics_s / wall, st.assembly_s - b.wave_kinematics_s,
+      100 * (st.assembly_s - b.wave_kinematics_s) / wall);
   return 0;
 }
 

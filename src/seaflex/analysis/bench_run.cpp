@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "seaflex/core/errors.hpp"
+#include "seaflex/hydro/kinematics_timer.hpp"
 
 namespace seaflex::analysis {
 
@@ -36,9 +37,19 @@ BenchReport bench_dynamics(const io::Model& model, double duration, const std::s
   }
   auto integrator = d.make_integrator();
   Simulation sim(*model.system, io::model_channels(model), *integrator, d.simulation());
+  namespace kt = hydro::kinematics_timer;
+  kt::reset();
+  kt::enable(true);
   const auto t0 = Clock::now();
-  report.run = sim.run(state);
+  try {
+    report.run = sim.run(state);
+  } catch (...) {
+    kt::enable(false);
+    throw;
+  }
   report.wall_s = seconds_since(t0);
+  kt::enable(false);
+  report.wave_kinematics_s = kt::seconds();
   report.stats = integrator->stats();
   report.integrator = integrator->name();
   return report;

@@ -1,6 +1,6 @@
 // `seaflex bench` without its printing: a model's dynamics timed without writing results
 // (statics first when the model starts from them), with the integrator's split of the
-// work and wall time (assembly, factorization, solve).
+// work and wall time (assembly, of it the wave kinematics; factorization, solve).
 #pragma once
 
 #include <optional>
@@ -18,6 +18,9 @@ struct BenchReport {
   SimulationReport run;
   double wall_s = 0.0;  ///< of the time loop
   IntegratorStats stats;
+  /// time in the wave kinematics (Ocean::fluid, Ocean::elevation) during the time loop,
+  /// summed over threads (s); part of stats.assembly_s
+  double wave_kinematics_s = 0.0;
 };
 
 /// Runs the model's dynamics for `duration` seconds (rounded to whole steps; 0: the

@@ -35,7 +35,7 @@ class Ocean {
   bool has_waves() const { return !waves_.components().empty(); }
 
   /// Surface elevation eta(x, y, t) (m), including the wave ramp.
-  double elevation(double x, double y, double t) const { return waves_.elevation(x, y, t); }
+  double elevation(double x, double y, double t) const;
   /// Fluid velocity and acceleration at p; zero (and wet = false) above the surface.
   /// The current applies below the surface; in a crest above z = 0 it takes its z = 0
   /// value. Below the seabed nothing is wet.

@@ -20,6 +20,10 @@ RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& co
 }
 
 MotionSample RaoMotion::sample(double t) const {
+  {
+    const std::lock_guard<std::mutex> lock(memo_mutex_);
+    if (t == memo_t_) return memo_;
+  }
   MotionSample m;
   for (const Term& term : terms_) {
     const std::complex<double> e = std::polar(1.0, term.omega * t);
@@ -32,6 +36,9 @@ MotionSample RaoMotion::sample(double t) const {
       m.x_tt[j] -= w * w * z.real();
     }
   }
+  const std::lock_guard<std::mutex> lock(memo_mutex_);
+  memo_t_ = t;
+  memo_ = m;
   return m;
 }
 

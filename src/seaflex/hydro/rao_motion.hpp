@@ -12,6 +12,8 @@
 #pragma once
 
 #include <complex>
+#include <limits>
+#include <mutex>
 #include <vector>
 
 #include "seaflex/hydro/rao_table.hpp"
@@ -37,6 +39,11 @@ class RaoMotion : public Motion {
     Vec6c c;
   };
   std::vector<Term> terms_;
+  // the last sample: the constraints ask for the same t several times per Newton iteration,
+  // and each sample costs a sine and cosine per wave component (issue 21)
+  mutable std::mutex memo_mutex_;
+  mutable double memo_t_ = std::numeric_limits<double>::quiet_NaN();
+  mutable MotionSample memo_;
 };
 
 /// The sum of two motions' displacements (a slow drift added to a wave-frequency motion;

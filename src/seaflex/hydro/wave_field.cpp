@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "seaflex/hydro/wave_grid.hpp"
+
 namespace seaflex::hydro {
 
 WaveField::WaveField(double depth, double g, double rho, std::vector<WaveComponent> components,
@@ -31,6 +33,7 @@ WaveField::WaveField(double depth, double g, double rho, std::vector<WaveCompone
 }
 
 double WaveField::elevation(double x, double y, double t) const {
+  if (grid_) return grid_->elevation(x, y, t);
   const double ramp = ramp_.factor(t);
   if (ramp == 0.0) return 0.0;
   double eta = 0.0;
@@ -83,6 +86,7 @@ FluidKinematics WaveField::airy(double x, double y, double z, double t) const {
 }
 
 FluidKinematics WaveField::kinematics(const Vec3& p, double t) const {
+  if (grid_) return grid_->kinematics(p, t);
   const double ramp = ramp_.factor(t);
   if (ramp == 0.0) {
     FluidKinematics calm;

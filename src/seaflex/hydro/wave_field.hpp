@@ -21,6 +21,7 @@
 #pragma once
 
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "seaflex/core/types.hpp"
@@ -28,6 +29,8 @@
 #include "seaflex/hydro/wave_component.hpp"
 
 namespace seaflex::hydro {
+
+class WaveGrid;
 
 /// Fluid state at one point: z up, mean free surface at z = 0, seabed at z = -depth.
 struct FluidKinematics {
@@ -71,6 +74,12 @@ class WaveField {
   /// Whether Wheeler stretching is applied.
   bool wheeler_stretching() const { return wheeler_; }
 
+  /// Evaluates elevation() and kinematics() by interpolation in `grid` (wave_grid.hpp; built
+  /// from a copy of this field without a grid) instead of the exact sum; nullptr: exact.
+  void set_grid(std::shared_ptr<const WaveGrid> grid) { grid_ = std::move(grid); }
+  /// The grid in use, or nullptr for the exact sum.
+  const WaveGrid* grid() const { return grid_.get(); }
+
  private:
   // Airy kinematics of all components at (x, y, z) with z in [-depth, 0], without the ramp
   FluidKinematics airy(double x, double y, double z, double t) const;
@@ -84,6 +93,7 @@ class WaveField {
   Ramp ramp_;
   bool wheeler_;
   bool deep_;
+  std::shared_ptr<const WaveGrid> grid_;
 };
 
 }  // namespace seaflex::hydro

@@ -11,6 +11,7 @@
 #include "seaflex/forces/hydro_matrices.hpp"
 #include "seaflex/forces/morison_beam.hpp"
 #include "seaflex/forces/rigid_morison.hpp"
+#include "seaflex/hydro/wave_grid.hpp"
 #include "seaflex/hydro/wave_spectrum.hpp"
 #include "seaflex/io/load_context.hpp"
 #include "seaflex/math/rotation.hpp"
@@ -20,6 +21,27 @@ namespace seaflex::io {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
+
+// kinematics: exact | grid, and the grid's spacings (docs/model-format.md 4.2)
+std::optional<hydro::WaveGridSpec> read_kinematics(MapReader& w) {
+  const bool grid =
+      w.has("kinematics") &&
+      w.choice("kinematics", Need::kRequired, {"exact", "grid"}).value_or("") == "grid";
+  if (!w.has("grid")) return grid ? std::optional(hydro::WaveGridSpec{}) : std::nullopt;
+  MapReader gr(w.diagnostics(), w.get("grid"), w.key_path("grid"));
+  if (!grid) {
+    w.error("grid", "grid spacings need kinematics: grid");
+    return std::nullopt;
+  }
+  hydro::WaveGridSpec spec;
+  spec.ds = gr.number("ds", Need::kOptional, NumberRule::positive("m")).value_or(spec.ds);
+  spec.dz = gr.number("dz", Need::kOptional, NumberRule::positive("m")).value_or(spec.dz);
+  spec.dz_growth = gr.number("dz_growth", Need::kOptional, NumberRule::range(0.0, 10.0, ""))
+                       .value_or(spec.dz_growth);
+  spec.dt = gr.number("dt", Need::kOptional, NumberRule::positive("s")).value_or(spec.dt);
+  gr.finish();
+  return spec;
+}
 
 std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double depth, double g,
                                                             hydro::Ramp& ramp, bool& wheeler) {
@@ -435,10 +457,15 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
   std::vector<hydro::WaveComponent> components;
   hydro::Ramp ramp;
   bool wheeler = true;
+  std::optional<hydro::WaveGridSpec> grid;
+  std::string grid_path;
   if (waves.IsDefined()) {
     MapReader wr(ctx.diag, waves, env.key_path("waves"));
-    if (wr.valid())
+    if (wr.valid()) {
       if (auto c = read_waves(wr, depth, g, ramp, wheeler)) components = std::move(*c);
+      grid = read_kinematics(wr);
+      grid_path = wr.key_path(wr.has("grid") ? "grid" : "kinematics");
+    }
     wr.finish();
   }
   hydro::CurrentProfile profile;
@@ -448,9 +475,18 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
       if (auto c = read_current(cr)) profile = std::move(*c);
     cr.finish();
   }
-  ctx.model.ocean = std::make_shared<const hydro::Ocean>(
-      rho, g, depth, hydro::WaveField(depth, g, rho, std::move(components), ramp, wheeler),
-      std::move(profile));
+  hydro::WaveField field(depth, g, rho, std::move(components), ramp, wheeler);
+  if (grid && !field.components().empty()) {
+    try {
+      field.set_grid(std::make_shared<const hydro::WaveGrid>(field, *grid));
+    } catch (const std::invalid_argument& e) {
+      // the spacings' own checks: too many levels (the loader checked the signs)
+      const YAML::Node n = waves["grid"] ? waves["grid"] : waves["kinematics"];
+      ctx.diag.error(n.Mark(), grid_path, e.what());
+    }
+  }
+  ctx.model.ocean =
+      std::make_shared<const hydro::Ocean>(rho, g, depth, std::move(field), std::move(profile));
   ctx.model.wave_probes.emplace_back("wave.eta", Vec3::Zero());
   if (probes.IsDefined()) {
     MapReader pr(ctx.diag, probes, env.key_path("wave_probes"));

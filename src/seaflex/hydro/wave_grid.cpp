@@ -1,0 +1,366 @@
+#include "seaflex/hydro/wave_grid.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+
+namespace seaflex::hydro {
+
+namespace {
+
+// 4-point Lagrange weights at x for the nodes x0..x3 (any spacing)
+std::array<double, 4> lagrange4(const double* xn, double x) {
+  std::array<double, 4> w{};
+  for (int a = 0; a < 4; ++a) {
+    double num = 1.0, den = 1.0;
+    for (int b = 0; b < 4; ++b) {
+      if (b == a) continue;
+      num *= x - xn[b];
+      den *= xn[a] - xn[b];
+    }
+    w[static_cast<std::size_t>(a)] = num / den;
+  }
+  return w;
+}
+
+// the stencil on an equal lattice of spacing h: first index and weights (nodes i0 .. i0+3,
+// x between nodes i0+1 and i0+2)
+std::int64_t lattice_stencil(double x, double h, std::array<double, 4>& w) {
+  const double u = x / h;
+  const double fl = std::floor(u);
+  const double f = u - fl;
+  // nodes at -1, 0, 1, 2 relative to fl
+  const double a = f + 1.0, b = f, c = f - 1.0, d = f - 2.0;
+  w[0] = -b * c * d / 6.0;
+  w[1] = a * c * d / 2.0;
+  w[2] = -a * b * d / 2.0;
+  w[3] = a * b * c / 6.0;
+  return static_cast<std::int64_t>(fl) - 1;
+}
+
+// a process-wide number for each grid (never 0), so a thread's cache never mistakes a new grid
+// at the address of a destroyed one for it
+std::uint64_t next_id() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+
+}  // namespace
+
+WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
+    : field_(std::move(field)), spec_(spec), slots_(kSlots), id_(next_id()) {
+  field_.set_grid(nullptr);  // the fallback below the grid is the exact sum
+  if (!(spec.ds > 0.0) || !std::isfinite(spec.ds))
+    throw std::invalid_argument(fmt::format("ds must be > 0, got {}", spec.ds));
+  if (!(spec.dz > 0.0) || !std::isfinite(spec.dz))
+    throw std::invalid_argument(fmt::format("dz must be > 0, got {}", spec.dz));
+  if (!(spec.dz_growth >= 0.0) || !std::isfinite(spec.dz_growth))
+    throw std::invalid_argument(fmt::format("dz_growth must be >= 0, got {}", spec.dz_growth));
+  if (!(spec.dt > 0.0) || !std::isfinite(spec.dt))
+    throw std::invalid_argument(fmt::format("dt must be > 0, got {}", spec.dt));
+  const auto& comps = field_.components();
+  if (!comps.empty()) {
+    for (const auto& c : comps)
+      if (c.direction != comps.front().direction)
+        throw std::invalid_argument(
+            "the components travel in more than one direction: grid kinematics need a "
+            "long-crested sea");
+    cos_b_ = std::cos(comps.front().direction);
+    sin_b_ = std::sin(comps.front().direction);
+  }
+  // the deepest level: the seabed, or in deep water where e^{k_min z} < 1e-9
+  const double depth = field_.depth();
+  const bool deep = std::isinf(depth);
+  double bottom = depth;
+  if (deep) {
+    double kmin = std::numeric_limits<double>::infinity();
+    for (const auto& c : comps)
+      if (c.amplitude != 0.0 && c.k > 0.0) kmin = std::min(kmin, c.k);
+    bottom = std::isfinite(kmin) ? 21.0 / kmin : 1.0;
+  }
+  z_.push_back(0.0);
+  while (z_.back() > -bottom) {
+    const double next = z_.back() - (spec.dz + spec.dz_growth * (-z_.back()));
+    z_.push_back(std::max(next, -bottom));
+    if (static_cast<int>(z_.size()) > kMaxLevels)
+      throw std::invalid_argument(
+          fmt::format("dz: more than {} levels over the depth of {:g} m: increase dz or dz_growth",
+                      kMaxLevels, bottom));
+  }
+  if (z_.size() < 4) z_ = {0.0, -bottom / 3.0, -2.0 * bottom / 3.0, -bottom};  // a cubic: 4
+  if (!deep)
+    for (double& z : z_) z = std::max(z, -depth);
+  if (static_cast<double>(comps.size()) * static_cast<double>(z_.size()) > kMaxFactors)
+    throw std::invalid_argument(fmt::format(
+        "{} components x {} levels is more than {:g} depth factors: use fewer components or "
+        "larger dz, dz_growth",
+        comps.size(), z_.size(), kMaxFactors));
+  const double column_bytes =
+      8.0 * (1.0 + 5.0 * static_cast<double>(comps.size()) + 5.0 * static_cast<double>(z_.size())) +
+      128.0;  // the map node, the vectors' headers
+  max_columns_ =
+      static_cast<std::int64_t>(std::max(64.0, std::min(spec.max_bytes / column_bytes, 1e12)));
+  // depth factors at every level (the same expressions as WaveField::airy)
+  const std::size_t J = z_.size(), N = comps.size();
+  fh_.assign(comps.size() * J, 0.0);
+  fv_.assign(comps.size() * J, 0.0);
+  fp_.assign(comps.size() * J, 0.0);
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    const double k = comps[i].k;
+    if (comps[i].amplitude == 0.0 || comps[i].omega == 0.0) continue;  // as WaveField::airy
+    for (std::size_t j = 0; j < J; ++j) {
+      const double z = z_[j];
+      const double ekz = std::exp(k * z);
+      if (deep) {
+        fh_[j * N + i] = fv_[j * N + i] = fp_[j * N + i] = ekz;
+      } else {
+        const double e_image = std::exp(-k * (z + 2.0 * depth));
+        const double e2 = std::exp(-2.0 * k * depth);
+        const double one_minus = -std::expm1(-2.0 * k * depth);
+        fh_[j * N + i] = (ekz + e_image) / one_minus;
+        fv_[j * N + i] = (ekz - e_image) / one_minus;
+        fp_[j * N + i] = (ekz + e_image) / (1.0 + e2);
+      }
+    }
+  }
+}
+
+std::int64_t WaveGrid::columns_started() const {
+  const std::lock_guard<std::shared_mutex> lock(mutex_);
+  return started_;
+}
+
+std::int64_t WaveGrid::blocks_filled() const {
+  const std::lock_guard<std::shared_mutex> lock(mutex_);
+  return blocks_;
+}
+
+std::int64_t WaveGrid::columns_stored() const {
+  const std::lock_guard<std::shared_mutex> lock(mutex_);
+  return stored_;
+}
+
+WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
+  Slot& slot = slot_of(n);
+  if (slot.n != n) {
+    stored_ -= static_cast<std::int64_t>(slot.columns.size());
+    slot.columns.clear();
+    slot.n = n;
+    ++generation_;
+  }
+  auto [it, inserted] = slot.columns.try_emplace(m);
+  Column& col = it->second;
+  if (!inserted) return col;
+  // the elevation and the phasors at (s_m, t_n): N sines and cosines
+  const double s = static_cast<double>(m) * spec_.ds;
+  const double t = static_cast<double>(n) * spec_.dt;
+  const auto& comps = field_.components();
+  const std::size_t J = z_.size();
+  const std::size_t N = comps.size();
+  col.coef.resize(5 * N);
+  for (std::size_t i = 0; i < N; ++i) {
+    const auto& c = comps[i];
+    const double theta = c.omega * t - c.k * s + c.phase;
+    const double ac = c.amplitude * std::cos(theta), as = c.amplitude * std::sin(theta);
+    col.eta += ac;
+    const double w = c.omega, ww = c.omega * c.omega;
+    col.coef[i] = w * ac;            // u_h
+    col.coef[N + i] = -ww * as;      // du_h/dt
+    col.coef[2 * N + i] = -w * as;   // u_z
+    col.coef[3 * N + i] = -ww * ac;  // du_z/dt
+    col.coef[4 * N + i] = ac;        // p / (rho g)
+  }
+  col.values.assign(5 * J, 0.0);
+  col.filled.assign((J + kBlock - 1) / kBlock, 0);
+  ++started_;
+  ++stored_;
+  return col;
+}
+
+void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1) const {
+  const std::size_t J = z_.size();
+  const auto& comps = field_.components();
+  for (std::size_t blk = j0 / kBlock; blk <= j1 / kBlock; ++blk) {
+    if (col.filled[blk]) continue;
+    col.filled[blk] = 1;
+    ++blocks_;
+    // the exact sums at the block's levels, without the ramp (WaveField::airy): five dot
+    // products of length N per level (Eigen's vectorized reductions)
+    const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
+    const auto N = static_cast<Eigen::Index>(comps.size());
+    using CMap = Eigen::Map<const Eigen::VectorXd>;
+    const CMap c_uh(col.coef.data(), N), c_ah(col.coef.data() + N, N),
+        c_uz(col.coef.data() + 2 * N, N), c_az(col.coef.data() + 3 * N, N),
+        c_p(col.coef.data() + 4 * N, N);
+    for (std::size_t j = lo; j < hi; ++j) {
+      const CMap fh(fh_.data() + j * static_cast<std::size_t>(N), N);
+      const CMap fv(fv_.data() + j * static_cast<std::size_t>(N), N);
+      const CMap fp(fp_.data() + j * static_cast<std::size_t>(N), N);
+      col.values[j] = fh.dot(c_uh);
+      col.values[J + j] = fv.dot(c_uz);
+      col.values[2 * J + j] = fh.dot(c_ah);
+      col.values[3 * J + j] = fv.dot(c_az);
+      col.values[4 * J + j] = fp.dot(c_p);
+    }
+  }
+}
+
+thread_local WaveGrid::StencilCache WaveGrid::t_cache_;
+
+const std::array<WaveGrid::Column*, 16>* WaveGrid::cached_stencil(std::int64_t m0,
+                                                                  std::int64_t n0) const {
+  const StencilCache& c = t_cache_;
+  if (c.grid == id_ && c.generation == generation_ && c.m0 == m0 && c.n0 == n0) return &c.cols;
+  return nullptr;
+}
+
+const std::array<WaveGrid::Column*, 16>* WaveGrid::stencil(std::int64_t m0, std::int64_t n0) const {
+  if (const auto* hit = cached_stencil(m0, n0)) return hit;
+  // the memory cap: the columns this stencil would add, less those a cleared slot frees
+  const auto stored_after = [&] {
+    std::int64_t after = stored_;
+    for (int b = 0; b < 4; ++b) {
+      const Slot& slot = slot_of(n0 + b);
+      if (slot.n != n0 + b) {
+        after += 4 - static_cast<std::int64_t>(slot.columns.size());
+        continue;
+      }
+      for (int a = 0; a < 4; ++a) after += slot.columns.count(m0 + a) ? 0 : 1;
+    }
+    return after;
+  };
+  if (stored_after() > max_columns_) {
+    // over the cap: first drop the times other than the stencil's and the next few
+    for (Slot& slot : slots_)
+      if (!slot.columns.empty() && (slot.n < n0 || slot.n > n0 + 7)) {
+        stored_ -= static_cast<std::int64_t>(slot.columns.size());
+        slot.columns.clear();
+        slot.n = INT64_MIN;
+        ++generation_;
+      }
+    if (stored_after() > max_columns_) return nullptr;
+  }
+  StencilCache& cache = t_cache_;
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a)
+      cache.cols[static_cast<std::size_t>(4 * b + a)] = &column(m0 + a, n0 + b);
+  // column() may have cleared a slot: the generation after the 16 lookups (they never clear
+  // one another's slots: 4 consecutive times use 4 different slots)
+  cache.grid = id_;
+  cache.generation = generation_;
+  cache.m0 = m0;
+  cache.n0 = n0;
+  return &cache.cols;
+}
+
+double WaveGrid::elevation(double x, double y, double t) const {
+  const double ramp = field_.ramp_factor(t);
+  if (ramp == 0.0) return 0.0;
+  std::array<double, 4> ws{}, wt{};
+  const std::int64_t m0 = lattice_stencil(x * cos_b_ + y * sin_b_, spec_.ds, ws);
+  const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
+  const auto sum = [&](const std::array<Column*, 16>& cols) {
+    double eta = 0.0;
+    for (int b = 0; b < 4; ++b)
+      for (int a = 0; a < 4; ++a)
+        eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
+    return ramp * eta;
+  };
+  {
+    // the common case, columns in place: shared with the other threads
+    const std::shared_lock<std::shared_mutex> lock(mutex_);
+    if (const auto* cols = cached_stencil(m0, n0)) return sum(*cols);
+  }
+  const std::unique_lock<std::shared_mutex> lock(mutex_);
+  const auto* cols = stencil(m0, n0);
+  if (!cols) return field_.elevation(x, y, t);  // over the memory cap: exact
+  return sum(*cols);
+}
+
+WaveGrid::Outcome WaveGrid::evaluate(const std::array<Column*, 16>& cols,
+                                     const std::array<double, 4>& ws,
+                                     const std::array<double, 4>& wt, const Vec3& p, double ramp,
+                                     bool may_fill, FluidKinematics& out) const {
+  const std::size_t J = z_.size();
+  double eta = 0.0;
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a)
+      eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
+  eta *= ramp;
+  if (p.z() > eta) {
+    out = FluidKinematics{};
+    return Outcome::kDone;
+  }
+  const double depth = field_.depth();
+  const bool deep = std::isinf(depth);
+  double z = p.z();
+  if (!deep && z < -depth) z = -depth;
+  double z_eval;
+  if (field_.wheeler_stretching()) {
+    // Wheeler (1970), as WaveField::kinematics
+    z_eval = deep ? z - eta : depth * (z - eta) / (depth + eta);
+  } else {
+    z_eval = std::min(z, 0.0);
+  }
+  if (z_eval < z_.back()) return Outcome::kExact;  // deep water below the grid
+  z_eval = std::min(z_eval, 0.0);
+  // the level interval z_j >= z_eval >= z_{j+1} (levels descend), then 4 levels around it
+  const auto it = std::lower_bound(z_.begin(), z_.end(), z_eval, std::greater<double>());
+  const std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, (it - z_.begin()) - 1);
+  const auto j0 = static_cast<std::size_t>(
+      std::clamp<std::ptrdiff_t>(j - 1, 0, static_cast<std::ptrdiff_t>(J) - 4));
+  if (!may_fill)
+    for (const Column* c : cols)
+      if (!c->filled[j0 / kBlock] || !c->filled[(j0 + 3) / kBlock]) return Outcome::kFill;
+  const std::array<double, 4> wz = lagrange4(z_.data() + j0, z_eval);
+  std::array<double, 5> v{};
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) {
+      const double wab = wt[b] * ws[a];
+      Column& c = *cols[static_cast<std::size_t>(4 * b + a)];
+      if (may_fill) fill_levels(c, j0, j0 + 3);
+      const double* col = c.values.data() + j0;
+      for (std::size_t q = 0; q < 5; ++q) {
+        const double* cq = col + q * J;
+        v[q] += wab * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);
+      }
+    }
+  out.velocity = ramp * Vec3(v[0] * cos_b_, v[0] * sin_b_, v[1]);
+  out.acceleration = ramp * Vec3(v[2] * cos_b_, v[2] * sin_b_, v[3]);
+  out.dynamic_pressure = ramp * field_.rho() * field_.g() * v[4];
+  out.wet = true;
+  return Outcome::kDone;
+}
+
+FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
+  const double ramp = field_.ramp_factor(t);
+  if (ramp == 0.0) {
+    FluidKinematics calm;
+    calm.wet = p.z() <= 0.0;
+    return calm;
+  }
+  std::array<double, 4> ws{}, wt{};
+  const std::int64_t m0 = lattice_stencil(p.x() * cos_b_ + p.y() * sin_b_, spec_.ds, ws);
+  const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
+  FluidKinematics out;
+  Outcome outcome = Outcome::kFill;
+  {
+    // the common case, columns and levels in place: shared with the other threads
+    const std::shared_lock<std::shared_mutex> lock(mutex_);
+    if (const auto* cols = cached_stencil(m0, n0))
+      outcome = evaluate(*cols, ws, wt, p, ramp, false, out);
+  }
+  if (outcome == Outcome::kFill) {
+    const std::unique_lock<std::shared_mutex> lock(mutex_);
+    const auto* cols = stencil(m0, n0);
+    outcome = cols ? evaluate(*cols, ws, wt, p, ramp, true, out) : Outcome::kExact;
+  }
+  // below the grid in deep water, or over the memory cap: the exact sum
+  return outcome == Outcome::kExact ? field_.kinematics(p, t) : out;
+}
+
+}  // namespace seaflex::hydro

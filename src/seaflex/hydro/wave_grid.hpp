@@ -1,0 +1,160 @@
+// Wave kinematics interpolated from a space-time grid, at a cost per evaluation that does
+// not depend on the number of wave components (issue 21; docs/model-format.md 4.2,
+// docs/verification.md "Grid wave kinematics").
+// - The exact field (wave_field.hpp) is a sum over N Airy components at every point and time.
+//   For a long-crested sea (all components travel along one direction b) it depends on
+//   s = x cos b + y sin b, z and t only. The grid holds, at stations s_m = m ds (every
+//   integer m, filled when first needed), levels z_j in [-d, 0] and times t_n = n dt, the
+//   exact sums (without the ramp) of eta(s, t) and of the Airy velocity, local acceleration
+//   and dynamic pressure at z_j. A column (s_m, t_n) costs N sines and cosines when first
+//   asked for (its elevation), and 5 N multiply-adds per level, filled by blocks of kBlock
+//   levels as points need them; each once per run. The cost per evaluation (16 columns x 4
+//   levels x 5 values) does not depend on N; the filling grows with N times the grid nodes
+//   the line visits (one new time sample per dt).
+// - Levels: z_0 = 0, z_{j+1} = z_j - (dz + dz_growth |z_j|), the last one at -d (deep
+//   water: at -21 / k_min, where e^{k_min z} < 1e-9; below it the exact sum is used): fine
+//   at the surface where the shortest components live, coarse at depth where only the long
+//   ones remain.
+// - A point is evaluated as the exact field does, with every sum replaced by 4-point
+//   Lagrange interpolation (cubic) in s, in t and (on the unequal levels) in z: eta(s, t)
+//   first; above it the point is dry; below, Wheeler stretching maps z to
+//   z_s = d (z - eta) / (d + eta) (deep: z - eta; without stretching z_s = min(z, 0)) and the
+//   Airy values are interpolated at (s, z_s, t). Stretching thus costs nothing extra and its
+//   error is that of eta times dU/dz.
+// - Error of cubic Lagrange interpolation of cos(k x) with spacing h on the middle interval:
+//   at most (9/16)/4! (k h)^4 = 0.0234 (k h)^4 of the amplitude (e.g. Davis 1975,
+//   "Interpolation and Approximation", thm. 3.1.1); for a component of frequency w, each
+//   direction adds 0.0234 (k ds)^4, 0.0234 (w dt)^4 and 0.0234 (k h_z)^4 e^{k z} of its
+//   amplitude. With the defaults (ds 0.25 m, dz 0.25 m, dz_growth 0.1, dt 0.1 s) the
+//   shortest component of the default band (5 wp) of a Tp = 10 s sea (w = 3.14 rad/s,
+//   k = 1.0 rad/m) is within 2.2e-4 (time) + 9e-5 (s) + 9e-5 (z) of its own amplitude; the
+//   whole JONSWAP sea (Hs 6 m, Tp 10 s, 200 components) within 1e-4 of the RMS velocity,
+//   RMS elevation and rho g RMS elevation, 2e-4 of the RMS acceleration, measured at 1800
+//   points between the nodes, with and without stretching (tests/unit/test_wave_grid.cpp).
+// Columns live in a ring of 64 time slots (memory ~ 64 x stations visited x (5 N + 5 J)
+// doubles, a few MB for a riser); evaluations more than 60 dt apart recompute columns (a time
+// loop's are not). Memory is capped at spec.max_bytes (256 MB): a point whose columns would
+// exceed it (a line kilometres long across the waves at a fine ds) gets the exact sum, so the
+// grid never makes a run fail or swap, only slower. Thread-safe: columns are read under a
+// shared lock and created and filled under an exclusive one; their values do not depend on the
+// order or the thread that fills them, so the results are identical for any number of threads
+// (below the cap).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <mutex>
+#include <shared_mutex>
+#include <unordered_map>
+#include <vector>
+
+#include "seaflex/hydro/wave_field.hpp"
+
+namespace seaflex::hydro {
+
+/// Grid spacings (docs/model-format.md 4.2, `grid`).
+struct WaveGridSpec {
+  double ds = 0.25;        ///< (m) station spacing along the wave direction, > 0
+  double dz = 0.25;        ///< (m) level spacing at the mean surface, > 0
+  double dz_growth = 0.1;  ///< (-) the spacing grows by this times the depth, >= 0
+  double dt = 0.1;         ///< (s) time sample spacing, > 0
+  /// (bytes) the most memory the stored columns may take; a point whose columns would
+  /// exceed it gets the exact sum instead (correct, only slower). Not an input key.
+  double max_bytes = 256e6;
+};
+
+class WaveGrid {
+ public:
+  /// The most levels the grid accepts, and the most depth factors (components x levels):
+  /// guards against a resource blow-up.
+  static constexpr int kMaxLevels = 20000;
+  static constexpr double kMaxFactors = 2e7;
+
+  /// field: the exact sea, long-crested (all components with one direction), without a
+  /// grid of its own. Throws std::invalid_argument naming the field: "ds must be > 0, got
+  /// 0" (same for dz, dt), "dz_growth must be >= 0, got -1", "dz: 25000 levels over the
+  /// depth of 1000 m, more than 20000: increase dz or dz_growth", "100000 components x 51
+  /// levels is more than 2e7 depth factors: use fewer components or larger dz, dz_growth",
+  /// "the components travel in more than one direction: grid kinematics need a long-crested
+  /// sea".
+  WaveGrid(WaveField field, WaveGridSpec spec);
+
+  /// As WaveField::elevation, interpolated.
+  double elevation(double x, double y, double t) const;
+  /// As WaveField::kinematics, interpolated (exact below the grid's deepest level).
+  FluidKinematics kinematics(const Vec3& p, double t) const;
+
+  /// The levels z_j (m), from 0 down.
+  const std::vector<double>& levels() const { return z_; }
+  const WaveGridSpec& spec() const { return spec_; }
+  /// Work done so far: columns started (N sines and cosines each) and blocks of kBlock levels
+  /// filled (N kBlock 5 multiply-adds each).
+  std::int64_t columns_started() const;
+  /// Columns stored now, and the most that may be (spec().max_bytes).
+  std::int64_t columns_stored() const;
+  std::int64_t max_columns() const { return max_columns_; }
+  std::int64_t blocks_filled() const;
+
+  /// Levels per lazily filled block of a column.
+  static constexpr int kBlock = 4;
+
+ private:
+  // one station and time: eta, the components' coefficients, and the Airy values
+  // [uh(J), uz(J), ah(J), az(J), p/(rho g)(J)], filled by blocks of levels
+  struct Column {
+    double eta = 0.0;
+    // [q N + i]: w a cos, -w^2 a sin, -w a sin, -w^2 a cos, a cos (of theta_i), the factors
+    // of f_h, f_h, f_v, f_v, f_p in u_h, du_h/dt, u_z, du_z/dt, p/(rho g)
+    std::vector<double> coef;
+    std::vector<double> values;
+    std::vector<char> filled;  // per block
+  };
+  struct Slot {
+    std::int64_t n = INT64_MIN;
+    std::unordered_map<std::int64_t, Column> columns;
+  };
+  static constexpr int kSlots = 64;
+
+  // the column (m, n), with its elevation and coefficients; caller holds mutex_
+  Column& column(std::int64_t m, std::int64_t n) const;
+  // fills the blocks of levels j0 .. j1 of col; caller holds mutex_
+  void fill_levels(Column& col, std::size_t j0, std::size_t j1) const;
+  // the 16 columns (m0 + a, n0 + b) at [4 b + a], or nullptr when storing the missing ones
+  // would exceed max_columns_; caller holds mutex_ exclusively. Remembered per thread.
+  const std::array<Column*, 16>* stencil(std::int64_t m0, std::int64_t n0) const;
+  // this thread's remembered stencil if it is (m0, n0) and still valid, else nullptr; caller
+  // holds mutex_ (shared is enough)
+  const std::array<Column*, 16>* cached_stencil(std::int64_t m0, std::int64_t n0) const;
+  // the last stencil of each thread (a Morison point asks 7 times at nearly one place)
+  struct StencilCache {
+    std::uint64_t grid = 0, generation = 0;
+    std::int64_t m0 = 0, n0 = 0;
+    std::array<Column*, 16> cols{};
+  };
+  static thread_local StencilCache t_cache_;
+  enum class Outcome { kDone, kFill, kExact };
+  // the point p from the 16 columns: kDone (out set), kExact (below the grid: use the exact
+  // sum), kFill (a level block is missing and may_fill is false: retry exclusively); caller
+  // holds mutex_, exclusively when may_fill
+  Outcome evaluate(const std::array<Column*, 16>& cols, const std::array<double, 4>& ws,
+                   const std::array<double, 4>& wt, const Vec3& p, double ramp, bool may_fill,
+                   FluidKinematics& out) const;
+  Slot& slot_of(std::int64_t n) const {
+    return slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
+  }
+
+  WaveField field_;
+  WaveGridSpec spec_;
+  double cos_b_ = 1.0, sin_b_ = 0.0;
+  std::vector<double> z_;
+  // depth factors f_h, f_v, f_p of component i at level j: [j * N + i]
+  std::vector<double> fh_, fv_, fp_;
+  mutable std::shared_mutex mutex_;
+  mutable std::vector<Slot> slots_;
+  mutable std::int64_t started_ = 0, blocks_ = 0, stored_ = 0;
+  std::int64_t max_columns_ = 0;
+  mutable std::uint64_t generation_ = 0;  // counts slot clearings (they free columns)
+  std::uint64_t id_;                      // this grid, for the threads' stencil caches
+};
+
+}  // namespace seaflex::hydro

@@ -1,0 +1,337 @@
+// Grid wave kinematics (hydro/wave_grid.hpp) against the exact component sum
+// (hydro/wave_field.hpp, itself verified against closed-form Airy theory in test_waves.cpp):
+// at grid nodes they agree to rounding, between nodes within the documented interpolation
+// error, with and without Wheeler stretching, in finite and deep water; and the input keys.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "seaflex/core/errors.hpp"
+#include "seaflex/hydro/wave_grid.hpp"
+#include "seaflex/hydro/wave_spectrum.hpp"
+#include "seaflex/io/model_loader.hpp"
+
+using seaflex::Vec3;
+using namespace seaflex::hydro;
+
+namespace {
+
+constexpr double kG = 9.81;
+constexpr double kRho = 1025.0;
+
+// the storm of bench/storm: JONSWAP Hs 6 m, Tp 10 s, gamma 3.3, 200 components, seed 1
+WaveField storm(double depth, bool wheeler, int components = 200) {
+  SpectrumSpec spec;
+  spec.hs = 6.0;
+  spec.tp = 10.0;
+  spec.gamma = 3.3;
+  spec.seed = 1;
+  spec.components = components;
+  spec.direction = 0.3;  // oblique: s = x cos b + y sin b is exercised
+  return WaveField(depth, kG, kRho, irregular_components(spec, depth, kG), Ramp{}, wheeler);
+}
+
+// standard deviations of the horizontal velocity and acceleration at z = 0 (deep-water
+// form of the depth factor, e^0 = 1; finite depth: coth(kd) >= 1, a larger scale, so the
+// tolerance below is the stricter one): sigma^2 = sum (a w^n)^2 / 2
+void surface_sigmas(const WaveField& f, double& su, double& sa, double& se) {
+  double u2 = 0, a2 = 0, e2 = 0;
+  for (const auto& c : f.components()) {
+    u2 += 0.5 * std::pow(c.amplitude * c.omega, 2);
+    a2 += 0.5 * std::pow(c.amplitude * c.omega * c.omega, 2);
+    e2 += 0.5 * c.amplitude * c.amplitude;
+  }
+  su = std::sqrt(u2);
+  sa = std::sqrt(a2);
+  se = std::sqrt(e2);
+}
+
+struct Errors {
+  double eta = 0, u = 0, a = 0, p = 0;
+  int wet = 0, mismatched_wet = 0;
+};
+
+// max errors over points at 12 times in [100, 160] s, x, y in [-8, 8] m, z from the seabed
+// (or -300 m) to 6 m (some in crests, some dry)
+Errors compare_off_grid(const WaveField& exact, const WaveGrid& grid, double zmin) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> ux(-8.0, 8.0), uz(zmin, 6.0), ut(100.0, 160.0);
+  Errors e;
+  for (int it = 0; it < 12; ++it) {
+    const double t = ut(rng);
+    for (int k = 0; k < 150; ++k) {
+      Vec3 p(ux(rng), ux(rng), uz(rng));
+      if (k % 3 == 0) p.z() = 0.5 * zmin * std::pow(uz(rng) / zmin, 2) - 2.0;  // more near 0
+      if (k % 3 == 0) p.z() = std::min(p.z(), 2.0);
+      const double eta_x = exact.elevation(p.x(), p.y(), t);
+      e.eta = std::max(e.eta, std::abs(grid.elevation(p.x(), p.y(), t) - eta_x));
+      const FluidKinematics kx = exact.kinematics(p, t), kg = grid.kinematics(p, t);
+      if (kx.wet != kg.wet) {
+        // only within the elevation error of the surface
+        EXPECT_LT(std::abs(p.z() - eta_x), 1e-3) << p.transpose() << " t " << t;
+        ++e.mismatched_wet;
+        continue;
+      }
+      if (!kx.wet) continue;
+      ++e.wet;
+      e.u = std::max(e.u, (kg.velocity - kx.velocity).norm());
+      e.a = std::max(e.a, (kg.acceleration - kx.acceleration).norm());
+      e.p = std::max(e.p, std::abs(kg.dynamic_pressure - kx.dynamic_pressure));
+    }
+  }
+  return e;
+}
+
+// the measured errors, for docs/verification.md section 25
+void report(const Errors& e, double su, double sa, double se) {
+  std::printf("grid error / scale: eta %.2e, u %.2e, a %.2e, p %.2e (%d wet points)\n", e.eta / se,
+              e.u / su, e.a / sa, e.p / (kRho * kG * se), e.wet);
+}
+
+}  // namespace
+
+// Between the nodes: the documented bound (wave_grid.hpp, docs/model-format.md 4.2) with the
+// default spacings: 1e-4 of the surface RMS horizontal velocity, of rho g times the RMS
+// elevation for the pressure and of the RMS elevation for eta; 2e-4 of the RMS acceleration
+// (which weights the short components, the worst interpolated, by w^2). Measured: eta 3.7e-5,
+// velocity 7.5e-5, acceleration 1.5e-4 of these scales (1800 points, 12 times).
+TEST(WaveGrid, MatchesExactSumBetweenNodesWithStretching) {
+  const WaveField exact = storm(290.0, true);
+  const WaveGrid grid(exact, WaveGridSpec{});
+  double su, sa, se;
+  surface_sigmas(exact, su, sa, se);
+  const Errors e = compare_off_grid(exact, grid, -290.0);
+  report(e, su, sa, se);
+  EXPECT_GT(e.wet, 1200);
+  EXPECT_LE(e.mismatched_wet, 2);
+  EXPECT_LT(e.eta, 1e-4 * se) << e.eta / se;
+  EXPECT_LT(e.u, 1e-4 * su) << e.u / su;
+  EXPECT_LT(e.a, 2e-4 * sa) << e.a / sa;
+  EXPECT_LT(e.p, 1e-4 * kRho * kG * se) << e.p / (kRho * kG * se);
+}
+
+TEST(WaveGrid, MatchesExactSumBetweenNodesWithoutStretching) {
+  const WaveField exact = storm(290.0, false);
+  const WaveGrid grid(exact, WaveGridSpec{});
+  double su, sa, se;
+  surface_sigmas(exact, su, sa, se);
+  const Errors e = compare_off_grid(exact, grid, -290.0);
+  report(e, su, sa, se);
+  EXPECT_GT(e.wet, 1200);
+  EXPECT_LT(e.u, 1e-4 * su) << e.u / su;
+  EXPECT_LT(e.a, 2e-4 * sa) << e.a / sa;
+  EXPECT_LT(e.p, 1e-4 * kRho * kG * se) << e.p / (kRho * kG * se);
+}
+
+TEST(WaveGrid, MatchesExactSumInDeepWaterAndBelowTheGrid) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const WaveField exact = storm(inf, true);
+  const WaveGrid grid(exact, WaveGridSpec{});
+  // deepest level: 21 / k_min with k_min = (0.5 wp)^2 / g at most (the lowest component
+  // lies in the first bin above 0.5 wp)
+  const double wp = 2 * std::numbers::pi / 10.0;
+  EXPECT_LT(grid.levels().back(), -21.0 / (0.25 * wp * wp / kG) * 0.8);
+  double su, sa, se;
+  surface_sigmas(exact, su, sa, se);
+  const Errors e = compare_off_grid(exact, grid, -300.0);
+  report(e, su, sa, se);
+  EXPECT_LT(e.u, 1e-4 * su) << e.u / su;
+  EXPECT_LT(e.a, 2e-4 * sa) << e.a / sa;
+  // far below the grid the exact sum is used: identical
+  const Vec3 p(1.3, -0.7, -5000.0);
+  EXPECT_EQ((grid.kinematics(p, 120.0).velocity - exact.kinematics(p, 120.0).velocity).norm(), 0.0);
+}
+
+// At the nodes (s_m, z_j, t_n) the interpolation weights are 0 and 1 exactly: the grid gives
+// the exact sum to rounding (1e-12 of the scales; the sums of 200 terms round to ~1e-15).
+TEST(WaveGrid, EqualsExactSumAtTheNodes) {
+  for (const bool wheeler : {false, true}) {
+    const WaveField exact = storm(290.0, wheeler);
+    const WaveGridSpec spec;
+    const WaveGrid grid(exact, spec);
+    double su, sa, se;
+    surface_sigmas(exact, su, sa, se);
+    const double b = exact.components().front().direction;
+    for (const int n : {1000, 1377}) {
+      const double t = n * spec.dt;
+      for (const int m : {-7, 0, 12}) {
+        const double s = m * spec.ds;
+        const Vec3 xy(s * std::cos(b), s * std::sin(b), 0.0);
+        const double eta = exact.elevation(xy.x(), xy.y(), t);
+        EXPECT_NEAR(grid.elevation(xy.x(), xy.y(), t), eta, 1e-12 * se);
+        for (const std::size_t j : {std::size_t{1}, std::size_t{9}, std::size_t{30}}) {
+          const double zl = grid.levels()[j];
+          // the point whose (stretched) evaluation depth is the level z_j
+          const double z = wheeler ? zl * (290.0 + eta) / 290.0 + eta : zl;
+          const Vec3 p(xy.x(), xy.y(), z);
+          const FluidKinematics kx = exact.kinematics(p, t), kg = grid.kinematics(p, t);
+          ASSERT_TRUE(kx.wet && kg.wet);
+          EXPECT_LT((kg.velocity - kx.velocity).norm(), 1e-12 * su) << j;
+          EXPECT_LT((kg.acceleration - kx.acceleration).norm(), 1e-12 * sa) << j;
+        }
+      }
+    }
+  }
+}
+
+// The ramp multiplies the grid's values as it does the exact sum's.
+TEST(WaveGrid, RampAndCalmWater) {
+  SpectrumSpec spec;
+  spec.hs = 6.0;
+  spec.tp = 10.0;
+  spec.components = 50;
+  const WaveField exact(290.0, kG, kRho, irregular_components(spec, 290.0, kG), Ramp{10.0, 20.0});
+  const WaveGrid grid(exact, WaveGridSpec{});
+  EXPECT_EQ(grid.elevation(3.0, 0.0, 5.0), 0.0);
+  EXPECT_TRUE(grid.kinematics(Vec3(0, 0, -1), 5.0).wet);
+  EXPECT_FALSE(grid.kinematics(Vec3(0, 0, 1), 5.0).wet);
+  const Vec3 p(2.2, 0.0, -3.1);
+  EXPECT_NEAR(grid.kinematics(p, 21.03).velocity.x(), exact.kinematics(p, 21.03).velocity.x(),
+              1e-4);
+}
+
+TEST(WaveGrid, RejectsBadSpacings) {
+  const WaveField exact = storm(290.0, true, 10);
+  const auto message = [&](WaveGridSpec s) -> std::string {
+    try {
+      WaveGrid g(exact, s);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  WaveGridSpec s;
+  s.ds = 0.0;
+  EXPECT_EQ(message(s), "ds must be > 0, got 0");
+  s = WaveGridSpec{};
+  s.dt = -1.0;
+  EXPECT_EQ(message(s), "dt must be > 0, got -1");
+  s = WaveGridSpec{};
+  s.dz_growth = -0.5;
+  EXPECT_EQ(message(s), "dz_growth must be >= 0, got -0.5");
+  s = WaveGridSpec{};
+  s.dz = 0.001;
+  s.dz_growth = 0.0;
+  EXPECT_EQ(message(s),
+            "dz: more than 20000 levels over the depth of 290 m: increase dz or dz_growth");
+  s = WaveGridSpec{};
+  s.dz = 0.02;
+  s.dz_growth = 0.0;
+  const WaveField many = storm(290.0, true, 2000);
+  try {
+    WaveGrid g(many, s);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "2000 components x 14501 levels is more than 2e+07 depth factors: use fewer "
+              "components or larger dz, dz_growth");
+  }
+  std::vector<WaveComponent> two = exact.components();
+  two[1].direction += 0.1;
+  EXPECT_THROW(WaveGrid(WaveField(290.0, kG, kRho, two, Ramp{}), WaveGridSpec{}),
+               std::invalid_argument);
+}
+
+// The memory cap: points along a 2 km line at 4 times need ~32,000 columns; with room for 64
+// the grid stores no more than that and gives the other points the exact sum, so every point
+// is within the bound of MatchesExactSumBetweenNodesWithStretching and many are exactly equal.
+TEST(WaveGrid, MemoryCapFallsBackToTheExactSum) {
+  const WaveField exact = storm(290.0, true, 50);
+  WaveGridSpec spec;
+  spec.max_bytes = 1.0;  // the floor: 64 columns
+  const WaveGrid grid(exact, spec);
+  EXPECT_EQ(grid.max_columns(), 64);
+  double su, sa, se;
+  surface_sigmas(exact, su, sa, se);
+  int equal = 0, points = 0;
+  for (const double t : {200.0, 200.05, 200.1, 200.15}) {
+    for (double x = 0.0; x <= 2000.0; x += 0.5) {
+      const Vec3 p(x, 0.0, -10.0);
+      const FluidKinematics kx = exact.kinematics(p, t), kg = grid.kinematics(p, t);
+      ++points;
+      equal += kx.velocity == kg.velocity;
+      EXPECT_LT((kg.velocity - kx.velocity).norm(), 1e-4 * su) << x << " " << t;
+      EXPECT_LE(grid.columns_stored(), grid.max_columns());
+    }
+  }
+  EXPECT_GT(equal, points / 2);  // most fell back
+  EXPECT_LT(equal, points);      // some were interpolated
+}
+
+namespace {
+
+const std::string kRiser = R"(environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 100}
+  waves:
+    type: jonswap
+    hs: 3
+    tp: 9
+    components: 40
+KINEMATICS
+bodies:
+  pipe:
+    type: ancf_beam
+    start: [0, 0, -100]
+    end: [0, 0, 0]
+    elements: 3
+    outer_diameter: 0.7
+    inner_diameter: 0.4
+    youngs_modulus: 210e9
+    density: 7850
+hydrodynamics:
+  pipe: {cd: 0.65, cm: 1.6}
+)";
+
+std::string with(const std::string& kin) {
+  std::string text = kRiser;
+  text.replace(text.find("KINEMATICS\n"), 11, kin);
+  return text;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    seaflex::io::load_model_text(text, "m.yaml");
+  } catch (const seaflex::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(WaveGrid, InputKeys) {
+  using seaflex::io::load_model_text;
+  EXPECT_EQ(load_model_text(with(""), "m.yaml").ocean->waves().grid(), nullptr);  // default
+  EXPECT_EQ(load_model_text(with("    kinematics: exact\n"), "m.yaml").ocean->waves().grid(),
+            nullptr);
+  const auto m = load_model_text(
+      with("    kinematics: grid\n    grid: {ds: 0.25, dz: 0.5, dz_growth: 0.2, dt: 0.05}\n"),
+      "m.yaml");
+  const WaveGrid* g = m.ocean->waves().grid();
+  ASSERT_NE(g, nullptr);
+  EXPECT_EQ(g->spec().ds, 0.25);
+  EXPECT_EQ(g->spec().dz, 0.5);
+  EXPECT_EQ(g->spec().dz_growth, 0.2);
+  EXPECT_EQ(g->spec().dt, 0.05);
+  EXPECT_EQ(g->levels().back(), -100.0);
+  EXPECT_EQ(
+      load_model_text(with("    kinematics: grid\n"), "m.yaml").ocean->waves().grid()->spec().ds,
+      0.25);
+  EXPECT_EQ(error_of(with("    kinematics: fast\n")),
+            "m.yaml:9:17: environment.waves.kinematics: unknown value 'fast'; expected one of: "
+            "exact, grid");
+  EXPECT_EQ(error_of(with("    grid: {ds: 1}\n")),
+            "m.yaml:9:11: environment.waves.grid: grid spacings need kinematics: grid");
+  EXPECT_EQ(error_of(with("    kinematics: grid\n    grid: {ds: 0}\n")),
+            "m.yaml:10:16: environment.waves.grid.ds: must be greater than 0 m, got 0");
+  EXPECT_EQ(error_of(with("    kinematics: grid\n    grid: {dx: 1}\n")),
+            "m.yaml:10:12: environment.waves.grid.dx: unknown key; did you mean 'ds'?");
+  EXPECT_EQ(error_of(with("    kinematics: grid\n    grid: {dz: 0.001, dz_growth: 0}\n")),
+            "m.yaml:10:11: environment.waves.grid: dz: more than 20000 levels over the depth of "
+            "100 m: increase dz or dz_growth");
+}
