@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -230,10 +231,11 @@ std::pair<int, double> AncfBeam::locate(double s) const {
   if (s < 0.0 || s > total_length_ * (1.0 + 1e-12))
     throw std::out_of_range(
         fmt::format("arc length {} m outside beam {} of length {} m", s, name(), total_length_));
-  for (int el = 0; el < num_elements(); ++el)
-    if (s <= node_arc_[el + 1] || el == num_elements() - 1)
-      return {el, std::clamp((s - node_arc_[el]) / element_lengths_[el], 0.0, 1.0)};
-  return {num_elements() - 1, 1.0};
+  // the first element whose end is at or beyond s (binary search: many attachments on
+  // long lines)
+  const auto it = std::lower_bound(node_arc_.begin() + 1, node_arc_.end(), s);
+  const int el = std::min(static_cast<int>(it - node_arc_.begin()) - 1, num_elements() - 1);
+  return {el, std::clamp((s - node_arc_[el]) / element_lengths_[el], 0.0, 1.0)};
 }
 
 BeamMarker::BeamMarker(const AncfBeam& beam, double s) : beam_(beam), s_(s) {

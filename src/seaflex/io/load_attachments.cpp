@@ -15,7 +15,7 @@ namespace seaflex::io {
 
 namespace {
 
-constexpr int kMaxModules = 100000;
+constexpr int kMaxModules = 10000;  // per entry: each a matrix block when discrete
 
 // mass, volume (at least one of them > 0), cd, drag_area, ca
 std::optional<AttachmentProperties> read_attachment(MapReader& r) {
