@@ -98,7 +98,7 @@ Vec3 BeamAttachment::load(const Vec3& r, const Vec3& rdot, double t, bool* wet, 
   if (!fl.wet) return f;
   *wet = true;
   const double rho = ocean_->rho();
-  f.z() += rho * g_.norm() * p_.volume;                    // buoyancy
+  f -= rho * p_.volume * g_;                               // buoyancy, against gravity
   f += rho * p_.volume * (1.0 + p_.ca) * fl.acceleration;  // DNV-RP-C205 eq. 6.2.2
   const Vec3 w = fl.velocity - rdot;                       // relative velocity
   const double cd = 0.5 * rho * p_.cd * p_.drag_area;      // Morison drag

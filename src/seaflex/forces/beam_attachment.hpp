@@ -8,7 +8,7 @@
 // coefficient refers to) and added-mass coefficient Ca (on V), with the fluid velocity u
 // and local acceleration a (hydro/ocean.hpp) and the point's velocity r_dot:
 //   weight       m g
-//   buoyancy     rho |g| V e_z                      when the point is below the surface
+//   buoyancy     -rho V g                          when the point is below the surface
 //   drag         1/2 rho Cd A_d |u - r_dot| (u - r_dot)           (Morison drag, isotropic)
 //   inertia      rho V (1 + Ca) a                    (Froude-Krylov and added-mass parts of
 //                                                     the Morison inertia term, DNV-RP-C205
