@@ -23,11 +23,13 @@
 #include <string>
 
 #include "memory_recorder.hpp"
+#include "model_channel.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/statics.hpp"
 
 using namespace seaflex;
+using seaflex::testing::channel;
 using seaflex::testing::MemoryRecorder;
 
 namespace {
@@ -52,13 +54,6 @@ io::Model with_elements(const char* name, int from, int n) {
   EXPECT_NE(at, std::string::npos) << name;
   if (at != std::string::npos) text.replace(at, key.size(), fmt::format("elements: {}", n));
   return io::load_model_text(text, name);
-}
-
-double channel(const io::Model& m, const State& s, const std::string& name) {
-  for (const Channel& c : io::model_channels(m))
-    if (c.name == name) return c.value(s);
-  ADD_FAILURE() << "no channel " << name;
-  return 0.0;
 }
 
 State statics(io::Model& m) {

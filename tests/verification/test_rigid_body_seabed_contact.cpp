@@ -14,11 +14,13 @@
 #include <numbers>
 
 #include "memory_recorder.hpp"
+#include "model_channel.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/statics.hpp"
 
 using namespace seaflex;
+using seaflex::testing::channel;
 using seaflex::testing::MemoryRecorder;
 
 namespace {
@@ -66,13 +68,6 @@ hydrodynamics:
                      fmt::arg("shape", shape), fmt::arg("mu", kMu), fmt::arg("vs", kSlip),
                      fmt::arg("m", kMass), fmt::arg("x", x), fmt::arg("z", z),
                      fmt::arg("pitch", pitch), fmt::arg("extra", extra));
-}
-
-double channel(const io::Model& m, const State& s, const std::string& name) {
-  for (const auto& c : io::model_channels(m))
-    if (c.name == name) return c.value(s);
-  ADD_FAILURE() << "no channel " << name;
-  return 0.0;
 }
 
 MemoryRecorder run(const std::string& text, double duration) {

@@ -9,11 +9,13 @@
 #include <numbers>
 
 #include "memory_recorder.hpp"
+#include "model_channel.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/simulation/simulation.hpp"
 #include "seaflex/solvers/statics.hpp"
 
 using namespace seaflex;
+using seaflex::testing::channel;
 using seaflex::testing::MemoryRecorder;
 
 namespace {
@@ -53,13 +55,6 @@ hydrodynamics:
                      fmt::arg("g", kG), fmt::arg("rw", kRhoWater), fmt::arg("k", kStiffnessArea),
                      fmt::arg("z0", z0), fmt::arg("od", kOd), fmt::arg("id", kId),
                      fmt::arg("rs", kRhoSteel), fmt::arg("extra", extra));
-}
-
-double channel(const io::Model& m, const State& s, const std::string& name) {
-  for (const auto& c : io::model_channels(m))
-    if (c.name == name) return c.value(s);
-  ADD_FAILURE() << "no channel " << name;
-  return 0.0;
 }
 
 }  // namespace
