@@ -128,6 +128,12 @@ bool GeneralizedAlpha::save(CheckpointWriter& out) const {
   out.put("ga.abar_n", abar_n_);
   out.put("ga.factored_h", factored_h_);
   out.put("ga.refresh_next", static_cast<long>(refresh_next_));
+  out.put("ga.h_last", h_last_);
+  out.put("ga.theta", carried_theta_);
+  if (h_last_ > 0.0) {
+    out.put("ga.a_before", a_before_);
+    out.put("ga.lambda_before", lambda_before_);
+  }
   if (factored_h_ > 0.0) {
     out.put("ga.factored_at.t", factored_at_.t);
     out.put("ga.factored_at.q", factored_at_.q);
@@ -148,6 +154,15 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
   abar_n_ = in.vector("ga.abar_n");
   factored_h_ = in.number("ga.factored_h");
   refresh_next_ = in.integer("ga.refresh_next") != 0;
+  // the predictor's memory (absent from checkpoints written before it: no extrapolation)
+  h_last_ = in.has("ga.h_last") ? in.number("ga.h_last") : 0.0;
+  carried_theta_ = in.has("ga.theta") ? in.number("ga.theta") : 0.0;
+  if (h_last_ > 0.0) {
+    a_before_ = in.vector("ga.a_before");
+    lambda_before_ = in.vector("ga.lambda_before");
+    if (a_before_.size() != n_ || lambda_before_.size() != m_)
+      throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
+  }
   projection_ready_ = false;
   if (a_n_.size() != n_ || abar_n_.size() != n_)
     throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
@@ -196,6 +211,7 @@ void GeneralizedAlpha::reject_step() {
   a_scale_ = a_scale_prev_;
   f_scale_ = f_scale_prev_;
   refresh_next_ = refresh_prev_;
+  h_last_ = 0.0;              // the retried step starts from the last step's values
   projection_ready_ = false;  // C_q at the restored state, at the next step
 }
 
@@ -276,10 +292,16 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   };
   trial_ = state;
   trial_.t = state.t + h;
-  // predictor: the acceleration of the last step (a smooth motion changes it by O(h) per
-  // step, so the first update is small); when a stale matrix drives the iterate away from
-  // it (a sudden load, a snap) the iterations restart from where the body would coast
+  // predictor: the accelerations and multipliers extrapolated from the last two steps
+  // (see the file header; the last step's values at the first step and after a rejected
+  // one); when a stale matrix drives the iterate away from it (a sudden load, a snap) the
+  // iterations restart from where the body would coast
   a_ = a_n_;
+  if (h_last_ > 0.0) {
+    const double r = h / h_last_;
+    a_ += r * (a_n_ - a_before_);
+    trial_.lambda += r * (state.lambda - lambda_before_);
+  }
   corr_.setZero();
   if (index2 && !projection_ready_) {
     try {
@@ -293,6 +315,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   refresh_next_ = false;
   double previous = 0.0;       // the previous update, in units of the tolerance
   double last_theta = 0.0;     // the previous contraction rate (0: none yet)
+  int rates = 0;               // contraction rates observed with this step's matrix
   double first_norm = -1.0;    // the step's first update, in units of the tolerance
   bool fresh_in_step = false;  // the matrix was factored during this step
   int diverging = 0;           // consecutive growing updates with a fresh Jacobian
@@ -353,6 +376,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
                         "without mass or supports, or redundant constraints",
                         newton_solver_.message()));
       factored_h_ = h;
+      carried_theta_ = 0.0;  // a new matrix: its rates are yet to be seen
       factored_at_ = trial_;
       factored_a_ = a_;
       want_fresh = s_.newton == NewtonMode::kFull || coasting;  // a hard step: full Newton
@@ -412,10 +436,13 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     bool converged = norm <= std::max(1.0, 1e3 * kEps * first_norm);
     if (previous > 0.0) {
       const double theta = norm / previous;
-      const double rate =
-          fresh_in_step ? theta : (last_theta > 0.0 ? std::max(theta, last_theta) : 1.0);
+      const double earlier = last_theta > 0.0       ? last_theta
+                             : carried_theta_ > 0.0 ? std::pow(carried_theta_, 0.8)
+                                                    : 1.0;
+      const double rate = fresh_in_step ? theta : std::max(theta, earlier);
       if (rate < 1.0 && rate / (1.0 - rate) * norm <= 1.0) converged = true;
       last_theta = theta;
+      ++rates;
       // modified Newton: a Jacobian at this iterate when the contraction is slower than
       // refresh_rate, or too slow to reach the tolerance within the remaining iterations
       const bool too_slow =
@@ -429,7 +456,8 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
           predict_coasting();
           corr_.setZero();
           trial_.lambda = state.lambda;
-          previous = last_theta = 0.0;
+          previous = last_theta = carried_theta_ = 0.0;
+          rates = 0;
           continue;
         }
       }
@@ -442,7 +470,8 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
         predict_coasting();
         corr_.setZero();
         trial_.lambda = state.lambda;
-        previous = last_theta = 0.0;
+        previous = last_theta = carried_theta_ = 0.0;
+        rates = 0;
         diverging = 0;
         want_fresh = true;
         continue;
@@ -475,6 +504,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   state.t = trial_.t;
   state.q = trial_.q;
   state.v = trial_.v;
+  lambda_before_ = state.lambda;
   state.lambda = trial_.lambda;
   // the local error of the positions (Zienkiewicz & Xie 1991 with abar, see the file header)
   local_error_ = (h * h) * ((0.5 - s_.beta) * abar_n_ + s_.beta * abar_ - a_n_ / 3.0 - a_ / 6.0);
@@ -483,6 +513,10 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   a_scale_prev_ = a_scale_;
   f_scale_prev_ = f_scale_;
   refresh_prev_ = refresh_at_start;
+  a_before_ = a_n_;
+  h_last_ = h;
+  // the rate of a stale matrix beyond the update that removed the predictor's error
+  if (!fresh_in_step && rates >= 2) carried_theta_ = last_theta;
   a_n_ = a_;
   abar_n_ = abar_;
   // a matrix that has aged so that the step needed more than refresh_iterations

@@ -70,6 +70,15 @@
 // Modified Newton keeps a factorization across iterations and steps while the observed
 // contraction rate stays below settings.refresh_rate, and refactors at the current
 // iterate otherwise (the rate policy of Hairer & Wanner sec. IV.8 for simplified Newton).
+// A matrix from an earlier step contracts unevenly (the first update removes the
+// predictor's error, later ones the matrix's), so one rate observed within the step is not
+// trusted alone: the second update is judged with the larger of its rate and the last rate
+// of the previous step raised to the power 0.8 (the FACCON of Hairer & Wanner's RADAU5,
+// sec. IV.8), which lets a smooth motion converge in two iterations.
+// Predictor: a_{n+1} and lambda_{n+1} extrapolated linearly from the last two steps,
+//   a_{n+1} ~ a_n + (h / h_{n-1}) (a_n - a_{n-1})   (and the same for lambda),
+// whose error is O(h^2) against O(h) for the last step's values; an imposed vessel motion
+// changes the multipliers of a heavy hull by far more per step than anything else.
 #pragma once
 
 #include <Eigen/SparseCholesky>
@@ -169,6 +178,11 @@ class GeneralizedAlpha : public Integrator {
   VecX a_prev_, abar_prev_;
   double a_scale_prev_ = 0.0, f_scale_prev_ = 0.0;
   bool refresh_prev_ = false;
+  // the predictor's memory: the last step's length (0: none, no extrapolation), the
+  // accelerations and multipliers before it, and its last contraction rate (0: none)
+  double h_last_ = 0.0;
+  VecX a_before_, lambda_before_;
+  double carried_theta_ = 0.0;
 };
 
 }  // namespace seaflex
