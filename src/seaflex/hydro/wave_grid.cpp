@@ -257,39 +257,64 @@ const std::array<WaveGrid::Column*, 16>* WaveGrid::stencil(std::int64_t m0, std:
   return &cache.cols;
 }
 
-double WaveGrid::elevation(double x, double y, double t) const {
-  const double ramp = field_.ramp_factor(t);
-  if (ramp == 0.0) return 0.0;
-  std::array<double, 4> ws{}, wt{};
-  const std::int64_t m0 = lattice_stencil(x * cos_b_ + y * sin_b_, spec_.ds, ws);
-  const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
-  const auto sum = [&](const std::array<Column*, 16>& cols) {
-    double eta = 0.0;
-    for (int b = 0; b < 4; ++b)
-      for (int a = 0; a < 4; ++a)
-        eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
-    return ramp * eta;
-  };
-  {
-    // the common case, columns in place: shared with the other threads
-    const std::shared_lock<std::shared_mutex> lock(mutex_);
-    if (const auto* cols = cached_stencil(m0, n0)) return sum(*cols);
+thread_local WaveGrid::SliceCache WaveGrid::t_slices_;
+
+WaveGrid::SliceCache& WaveGrid::slices_at(double t) const {
+  SliceCache& c = t_slices_;
+  // a slice is (5 J + 1) doubles and its flags: at most a quarter of the columns' budget
+  if (!c.valid || c.grid != id_ || c.t != t || static_cast<double>(c.bytes) > spec_.max_bytes / 4) {
+    c.stations.clear();
+    c.bytes = 0;
+    c.grid = id_;
+    c.t = t;
+    c.valid = true;
   }
-  const std::unique_lock<std::shared_mutex> lock(mutex_);
-  const auto* cols = stencil(m0, n0);
-  if (!cols) return field_.elevation(x, y, t);  // over the memory cap: exact
-  return sum(*cols);
+  return c;
 }
 
-WaveGrid::Outcome WaveGrid::evaluate(const std::array<Column*, 16>& cols,
-                                     const std::array<double, 4>& ws,
-                                     const std::array<double, 4>& wt, const Vec3& p, double ramp,
-                                     bool may_fill, FluidKinematics& out) const {
+void WaveGrid::make_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
+                           std::int64_t m0, SliceCache& cache, std::array<Slice*, 4>& out) const {
+  const std::size_t J = z_.size();
+  for (int a = 0; a < 4; ++a) {
+    auto [it, inserted] = cache.stations.try_emplace(m0 + a);
+    Slice& sl = it->second;
+    out[static_cast<std::size_t>(a)] = &sl;
+    if (!inserted) continue;
+    for (int b = 0; b < 4; ++b)
+      sl.eta += wt[static_cast<std::size_t>(b)] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
+    sl.values.assign(5 * J, 0.0);
+    sl.filled.assign((J + kBlock - 1) / kBlock, 0);
+    cache.bytes += 8 * (5 * J + 1) + sl.filled.size() + 64;
+  }
+}
+
+void WaveGrid::fill_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
+                           const std::array<Slice*, 4>& sl, std::size_t j0) const {
+  const std::size_t J = z_.size();
+  for (int a = 0; a < 4; ++a) {
+    Slice& s = *sl[static_cast<std::size_t>(a)];
+    for (std::size_t blk = j0 / kBlock; blk <= (j0 + 3) / kBlock; ++blk) {
+      if (s.filled[blk]) continue;
+      const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
+      for (int b = 0; b < 4; ++b) {
+        Column& c = *cols[static_cast<std::size_t>(4 * b + a)];
+        fill_levels(c, lo, hi - 1);
+        const double w = wt[static_cast<std::size_t>(b)];
+        for (std::size_t q = 0; q < 5; ++q)
+          for (std::size_t j = lo; j < hi; ++j) s.values[q * J + j] += w * c.values[q * J + j];
+      }
+      s.filled[blk] = 1;
+    }
+  }
+}
+
+WaveGrid::Outcome WaveGrid::evaluate_slices(const std::array<Slice*, 4>& sl,
+                                            const std::array<double, 4>& ws, const Vec3& p,
+                                            double ramp, FluidKinematics& out,
+                                            std::size_t& j0) const {
   const std::size_t J = z_.size();
   double eta = 0.0;
-  for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a)
-      eta += wt[b] * ws[a] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
+  for (std::size_t a = 0; a < 4; ++a) eta += ws[a] * sl[a]->eta;
   eta *= ramp;
   if (p.z() > eta) {
     out = FluidKinematics{};
@@ -311,29 +336,49 @@ WaveGrid::Outcome WaveGrid::evaluate(const std::array<Column*, 16>& cols,
   // the level interval z_j >= z_eval >= z_{j+1} (levels descend), then 4 levels around it
   const auto it = std::lower_bound(z_.begin(), z_.end(), z_eval, std::greater<double>());
   const std::ptrdiff_t j = std::max<std::ptrdiff_t>(0, (it - z_.begin()) - 1);
-  const auto j0 = static_cast<std::size_t>(
+  j0 = static_cast<std::size_t>(
       std::clamp<std::ptrdiff_t>(j - 1, 0, static_cast<std::ptrdiff_t>(J) - 4));
-  if (!may_fill)
-    for (const Column* c : cols)
-      if (!c->filled[j0 / kBlock] || !c->filled[(j0 + 3) / kBlock]) return Outcome::kFill;
+  for (const Slice* s : sl)
+    if (!s->filled[j0 / kBlock] || !s->filled[(j0 + 3) / kBlock]) return Outcome::kFill;
   const std::array<double, 4> wz = lagrange4(z_.data() + j0, z_eval);
   std::array<double, 5> v{};
-  for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) {
-      const double wab = wt[b] * ws[a];
-      Column& c = *cols[static_cast<std::size_t>(4 * b + a)];
-      if (may_fill) fill_levels(c, j0, j0 + 3);
-      const double* col = c.values.data() + j0;
-      for (std::size_t q = 0; q < 5; ++q) {
-        const double* cq = col + q * J;
-        v[q] += wab * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);
-      }
+  for (std::size_t a = 0; a < 4; ++a) {
+    const double* col = sl[a]->values.data() + j0;
+    for (std::size_t q = 0; q < 5; ++q) {
+      const double* cq = col + q * J;
+      v[q] += ws[a] * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);
     }
+  }
   out.velocity = ramp * Vec3(v[0] * cos_b_, v[0] * sin_b_, v[1]);
   out.acceleration = ramp * Vec3(v[2] * cos_b_, v[2] * sin_b_, v[3]);
   out.dynamic_pressure = ramp * field_.rho() * field_.g() * v[4];
   out.wet = true;
   return Outcome::kDone;
+}
+
+double WaveGrid::elevation(double x, double y, double t) const {
+  const double ramp = field_.ramp_factor(t);
+  if (ramp == 0.0) return 0.0;
+  std::array<double, 4> ws{}, wt{};
+  const std::int64_t m0 = lattice_stencil(x * cos_b_ + y * sin_b_, spec_.ds, ws);
+  SliceCache& cache = slices_at(t);
+  std::array<Slice*, 4> sl{};
+  bool have = true;
+  for (int a = 0; a < 4 && have; ++a) {
+    const auto it = cache.stations.find(m0 + a);
+    have = it != cache.stations.end();
+    if (have) sl[static_cast<std::size_t>(a)] = &it->second;
+  }
+  if (!have) {
+    const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
+    const std::unique_lock<std::shared_mutex> lock(mutex_);
+    const auto* cols = stencil(m0, n0);
+    if (!cols) return field_.elevation(x, y, t);  // over the memory cap: exact
+    make_slices(*cols, wt, m0, cache, sl);
+  }
+  double eta = 0.0;
+  for (std::size_t a = 0; a < 4; ++a) eta += ws[a] * sl[a]->eta;
+  return ramp * eta;
 }
 
 FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
@@ -345,21 +390,31 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   }
   std::array<double, 4> ws{}, wt{};
   const std::int64_t m0 = lattice_stencil(p.x() * cos_b_ + p.y() * sin_b_, spec_.ds, ws);
-  const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
-  FluidKinematics out;
-  Outcome outcome = Outcome::kFill;
-  {
-    // the common case, columns and levels in place: shared with the other threads
-    const std::shared_lock<std::shared_mutex> lock(mutex_);
-    if (const auto* cols = cached_stencil(m0, n0))
-      outcome = evaluate(*cols, ws, wt, p, ramp, false, out);
+  SliceCache& cache = slices_at(t);
+  std::array<Slice*, 4> sl{};
+  bool have = true;
+  for (int a = 0; a < 4 && have; ++a) {
+    const auto it = cache.stations.find(m0 + a);
+    have = it != cache.stations.end();
+    if (have) sl[static_cast<std::size_t>(a)] = &it->second;
   }
+  FluidKinematics out;
+  std::size_t j0 = 0;
+  // the common case: this thread's slices at t hold the point's stations and levels
+  Outcome outcome = have ? evaluate_slices(sl, ws, p, ramp, out, j0) : Outcome::kFill;
   if (outcome == Outcome::kFill) {
+    const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
     const std::unique_lock<std::shared_mutex> lock(mutex_);
     const auto* cols = stencil(m0, n0);
-    outcome = cols ? evaluate(*cols, ws, wt, p, ramp, true, out) : Outcome::kExact;
+    if (!cols) return field_.kinematics(p, t);  // over the memory cap: exact
+    if (!have) make_slices(*cols, wt, m0, cache, sl);
+    outcome = evaluate_slices(sl, ws, p, ramp, out, j0);
+    if (outcome == Outcome::kFill) {
+      fill_slices(*cols, wt, sl, j0);
+      outcome = evaluate_slices(sl, ws, p, ramp, out, j0);
+    }
   }
-  // below the grid in deep water, or over the memory cap: the exact sum
+  // below the grid in deep water: the exact sum
   return outcome == Outcome::kExact ? field_.kinematics(p, t) : out;
 }
 

@@ -31,6 +31,12 @@
 //   whole JONSWAP sea (Hs 6 m, Tp 10 s, 200 components) within 1e-4 of the RMS velocity,
 //   RMS elevation and rho g RMS elevation, 2e-4 of the RMS acceleration, measured at 1800
 //   points between the nodes, with and without stretching (tests/unit/test_wave_grid.cpp).
+// Time slices: all the points of one time (every Newton iteration of a step asks at the
+// same t) share the time interpolation. Each thread keeps, for the t it last asked at, the
+// columns of each station it visited contracted in time, S_m(j) = sum_b w_b(t) C(m, n0 + b)(j)
+// (filled by blocks of levels as the columns are); a point then costs 4 stations x 4 levels x
+// 5 values instead of 16 columns x 4 levels x 5, and no lock. The sums are the same tensor
+// product as before, in another order (round-off only).
 // Columns live in a ring of 64 time slots (memory ~ 64 x stations visited x (5 N + 5 J)
 // doubles, a few MB for a riser); evaluations more than 60 dt apart recompute columns (a time
 // loop's are not). Memory is capped at spec.max_bytes (256 MB): a point whose columns would
@@ -133,12 +139,35 @@ class WaveGrid {
   };
   static thread_local StencilCache t_cache_;
   enum class Outcome { kDone, kFill, kExact };
-  // the point p from the 16 columns: kDone (out set), kExact (below the grid: use the exact
-  // sum), kFill (a level block is missing and may_fill is false: retry exclusively); caller
-  // holds mutex_, exclusively when may_fill
-  Outcome evaluate(const std::array<Column*, 16>& cols, const std::array<double, 4>& ws,
-                   const std::array<double, 4>& wt, const Vec3& p, double ramp, bool may_fill,
-                   FluidKinematics& out) const;
+  // one station's columns contracted in time at one t (see the file header)
+  struct Slice {
+    double eta = 0.0;
+    std::vector<double> values;  // [q J + j], as Column::values
+    std::vector<char> filled;    // per block of levels
+  };
+  // this thread's slices at the time t of the grid `grid`, by station
+  struct SliceCache {
+    std::uint64_t grid = 0;
+    double t = 0.0;
+    bool valid = false;
+    std::size_t bytes = 0;
+    std::unordered_map<std::int64_t, Slice> stations;
+  };
+  static thread_local SliceCache t_slices_;
+  // this thread's slice cache, emptied when it holds another time, grid or too much memory
+  SliceCache& slices_at(double t) const;
+  // the slices of the stations m0 .. m0+3 from the stencil's columns (elevation only, their
+  // levels are filled by fill_slices); caller holds mutex_ exclusively
+  void make_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
+                   std::int64_t m0, SliceCache& cache, std::array<Slice*, 4>& out) const;
+  // the blocks of levels j0 .. j0+3 of the four slices, filling the columns' first; caller
+  // holds mutex_ exclusively
+  void fill_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
+                   const std::array<Slice*, 4>& sl, std::size_t j0) const;
+  // the point p from the four slices: kDone (out set), kExact (below the grid), kFill (a
+  // level block is missing: j0 set to the first of the 4 levels it needs)
+  Outcome evaluate_slices(const std::array<Slice*, 4>& sl, const std::array<double, 4>& ws,
+                          const Vec3& p, double ramp, FluidKinematics& out, std::size_t& j0) const;
   Slot& slot_of(std::int64_t n) const {
     return slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
   }
