@@ -288,6 +288,10 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         seed = rng.randrange(1 << 30)
         rng.seed(seed)
         cases = [("double_pendulum.yaml", "1.0"), ("drilling_rig.yaml", "20")]
+        if os.environ.get("SEAFLEX_SANITIZED") == "1":
+            # under the sanitizers (tests/CMakeLists.txt) the drilling rig's three 200 s runs
+            # take 4 minutes: generalized-alpha's restart on the 45 s riser in current instead
+            cases[1] = ("riser_in_current.yaml", "5")
         for example, every in cases:
             model = os.path.join(EXAMPLES, example)
             ref = os.path.join(self.dir, "ref_" + example)

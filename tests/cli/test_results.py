@@ -125,7 +125,9 @@ class Results(TempDirCase):
         proc = subprocess.Popen([SEAFLEX, "run", model, "-o", out, "-q", "--format", "both"],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         csv_path = os.path.join(out, "timeseries.csv")
-        deadline = time.time() + 60
+        # 3 s of the snap start: 1 s in release, up to a minute under the sanitizers on a
+        # loaded machine; the wait ends as soon as the rows are there
+        deadline = time.time() + 300
         try:
             # wait for 31 rows in the CSV (header + 31 lines), which is written row by row
             # like the HDF5 file: each output row goes to the CSV file first, so the HDF5
@@ -243,6 +245,9 @@ supports:
             self.assertAlmostEqual(f["beams/beam/results/moment"][0, 0] / (w * 10**2 / 2), 1.0,
                                    delta=0.01)
 
+    @unittest.skipIf(os.environ.get("SEAFLEX_SANITIZED") == "1",
+                     "the snap start takes 2300 adaptive steps: 3 minutes under the sanitizers "
+                     "(tests/CMakeLists.txt); run in the release build")
     def test_paraview_time_series(self):
         # the riser and the buoy in an Airy wave, and a plate on simply supported edges
         text = RISER.replace("DURATION", "0.4").replace(
