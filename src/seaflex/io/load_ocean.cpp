@@ -50,39 +50,43 @@ std::optional<hydro::WaveGridSpec> read_kinematics(MapReader& w) {
 bool read_spreading(MapReader& w, int components, hydro::DirectionSet& set) {
   MapReader sp(w.diagnostics(), w.get("spreading"), w.key_path("spreading"));
   if (!sp.valid()) return false;
+  bool ok = true;
+  const auto fail = [&](std::string_view key, std::string message) {
+    sp.error(key, std::move(message));
+    ok = false;
+  };
   const auto type = sp.choice("type", Need::kRequired, {"cos2s"});
-  hydro::SpreadingSpec spec;
   const auto s = sp.number("s", Need::kRequired, NumberRule::positive(""));
   // 1000: a half-width of about 2/sqrt(s) rad = 3.6 deg, long-crested for any purpose
   if (s && *s > 1000.0)
-    sp.error("s", fmt::format("must be at most 1000 (a narrower sea is long-crested: give no "
-                              "spreading), got {:g}",
-                              *s));
+    fail("s", fmt::format("must be at most 1000 (a narrower sea is long-crested: give no "
+                          "spreading), got {:g}",
+                          *s));
+  const bool gave_directions = sp.has("directions");
   const auto directions = sp.integer("directions", Need::kOptional, 1, 1000);
-  spec.directions = directions.value_or(9);
-  if (directions && *directions % 2 == 0)
-    sp.error("directions",
-             fmt::format("must be odd, so that one direction lies on the mean direction, got {}",
-                         *directions));
+  const int m = directions.value_or(9);
+  if (m % 2 == 0)
+    fail("directions",
+         fmt::format("must be odd, so that one direction lies on the mean direction, got {}", m));
+  const bool gave_max_angle = sp.has("max_angle");
   const auto max_angle = sp.number("max_angle", Need::kOptional, NumberRule::positive("deg"));
   if (max_angle && *max_angle > 180.0)
-    sp.error("max_angle",
-             fmt::format("must be at most 180 deg (cos-2s spreads over the whole circle), got {:g} "
-                         "deg",
-                         *max_angle));
+    fail("max_angle",
+         fmt::format("must be at most 180 deg (cos-2s spreads over the whole circle), got {:g} deg",
+                     *max_angle));
   // the cap of a long-crested sea's components holds for the whole spread sea
-  if (directions && static_cast<long>(components) * *directions > 100000)
-    sp.error("directions",
-             fmt::format("{} components x {} directions = {} components, more than 100000: use "
-                         "fewer components (they count per direction) or directions",
-                         components, *directions, static_cast<long>(components) * *directions));
+  if (static_cast<long>(components) * m > 100000)
+    fail("directions",
+         fmt::format("{} components x {} directions{} = {} components, more than 100000: use "
+                     "fewer components (they count per direction) or directions",
+                     components, m, directions ? "" : " (the default)",
+                     static_cast<long>(components) * m));
   sp.finish();
-  if (!type || !s || *s > 1000.0 || spec.directions % 2 == 0 ||
-      static_cast<long>(components) * spec.directions > 100000 ||
-      (max_angle && *max_angle > 180.0) || (sp.has("directions") && !directions) ||
-      (sp.has("max_angle") && !max_angle))
+  if (!ok || !type || !s || (gave_directions && !directions) || (gave_max_angle && !max_angle))
     return false;
+  hydro::SpreadingSpec spec;
   spec.s = *s;
+  spec.directions = m;
   spec.max_angle = std::min(std::numbers::pi, max_angle.value_or(180.0) * kDeg);
   set = hydro::cos2s_directions(spec);
   return true;
