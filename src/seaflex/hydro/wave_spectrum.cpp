@@ -63,23 +63,32 @@ void spectrum_band(const SpectrumSpec& spec, double& omega_min, double& omega_ma
   omega_max = spec.omega_max > 0.0 ? spec.omega_max : 5.0 * wp;
 }
 
-std::vector<WaveComponent> irregular_components(const SpectrumSpec& spec, double depth, double g) {
+std::vector<WaveComponent> irregular_components(const SpectrumSpec& spec, double depth, double g,
+                                                const DirectionSet& directions) {
   validate(spec);
+  if (directions.angles.size() != directions.weights.size() || directions.angles.empty())
+    throw std::invalid_argument("directions must hold as many angles as weights");
   double lo = 0.0, hi = 0.0;
   spectrum_band(spec, lo, hi);
   const int n = spec.components;
   const double dw = (hi - lo) / n;
   std::mt19937_64 engine(spec.seed);
-  std::vector<WaveComponent> components(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    const double u = uniform01(engine);
-    const double v = uniform01(engine);
-    WaveComponent& c = components[static_cast<std::size_t>(i)];
-    c.omega = lo + (i + u) * dw;
-    c.amplitude = std::sqrt(2.0 * spectral_density(spec, c.omega) * dw);
-    c.k = wave_number(c.omega, depth, g);
-    c.direction = spec.direction;
-    c.phase = 2.0 * std::numbers::pi * v;
+  std::vector<WaveComponent> components;
+  components.reserve(directions.angles.size() * static_cast<std::size_t>(n));
+  for (std::size_t j = 0; j < directions.angles.size(); ++j) {
+    const double weight = directions.weights[j];
+    const double direction = spec.direction + directions.angles[j];
+    for (int i = 0; i < n; ++i) {
+      const double u = uniform01(engine);
+      const double v = uniform01(engine);
+      WaveComponent& c = components.emplace_back();
+      c.omega = lo + (i + u) * dw;
+      // S(omega, theta) = S(omega) D(theta): the bin's share w_j (DNV-RP-C205 3.5.8)
+      c.amplitude = std::sqrt(2.0 * weight * spectral_density(spec, c.omega) * dw);
+      c.k = wave_number(c.omega, depth, g);
+      c.direction = direction;
+      c.phase = 2.0 * std::numbers::pi * v;
+    }
   }
   return components;
 }

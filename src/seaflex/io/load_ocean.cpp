@@ -3,6 +3,7 @@
 // rigid bodies. Format: docs/model-format.md sections 4 and 11.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <tuple>
@@ -11,6 +12,7 @@
 #include "seaflex/forces/hydro_matrices.hpp"
 #include "seaflex/forces/morison_beam.hpp"
 #include "seaflex/forces/rigid_morison.hpp"
+#include "seaflex/hydro/directional_spreading.hpp"
 #include "seaflex/hydro/wave_grid.hpp"
 #include "seaflex/hydro/wave_spectrum.hpp"
 #include "seaflex/io/load_context.hpp"
@@ -43,6 +45,53 @@ std::optional<hydro::WaveGridSpec> read_kinematics(MapReader& w) {
   return spec;
 }
 
+// spreading: {type: cos2s, s, directions, max_angle} of an irregular sea with `components`
+// components per direction (docs/model-format.md 4.2); false after an error
+bool read_spreading(MapReader& w, int components, hydro::DirectionSet& set) {
+  MapReader sp(w.diagnostics(), w.get("spreading"), w.key_path("spreading"));
+  if (!sp.valid()) return false;
+  bool ok = true;
+  const auto fail = [&](std::string_view key, std::string message) {
+    sp.error(key, std::move(message));
+    ok = false;
+  };
+  const auto type = sp.choice("type", Need::kRequired, {"cos2s"});
+  const auto s = sp.number("s", Need::kRequired, NumberRule::positive(""));
+  // 1000: a half-width of about 2/sqrt(s) rad = 3.6 deg, long-crested for any purpose
+  if (s && *s > 1000.0)
+    fail("s", fmt::format("must be at most 1000 (a narrower sea is long-crested: give no "
+                          "spreading), got {:g}",
+                          *s));
+  const bool gave_directions = sp.has("directions");
+  const auto directions = sp.integer("directions", Need::kOptional, 1, 1000);
+  const int m = directions.value_or(9);
+  if (m % 2 == 0)
+    fail("directions",
+         fmt::format("must be odd, so that one direction lies on the mean direction, got {}", m));
+  const bool gave_max_angle = sp.has("max_angle");
+  const auto max_angle = sp.number("max_angle", Need::kOptional, NumberRule::positive("deg"));
+  if (max_angle && *max_angle > 180.0)
+    fail("max_angle",
+         fmt::format("must be at most 180 deg (cos-2s spreads over the whole circle), got {:g} deg",
+                     *max_angle));
+  // the cap of a long-crested sea's components holds for the whole spread sea
+  if (static_cast<long>(components) * m > 100000)
+    fail("directions",
+         fmt::format("{} components x {} directions{} = {} components, more than 100000: use "
+                     "fewer components (they count per direction) or directions",
+                     components, m, directions ? "" : " (the default)",
+                     static_cast<long>(components) * m));
+  sp.finish();
+  if (!ok || !type || !s || (gave_directions && !directions) || (gave_max_angle && !max_angle))
+    return false;
+  hydro::SpreadingSpec spec;
+  spec.s = *s;
+  spec.directions = m;
+  spec.max_angle = std::min(std::numbers::pi, max_angle.value_or(180.0) * kDeg);
+  set = hydro::cos2s_directions(spec);
+  return true;
+}
+
 std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double depth, double g,
                                                             hydro::Ramp& ramp, bool& wheeler) {
   const auto type = w.choice("type", Need::kRequired, {"airy", "jonswap", "pierson_moskowitz"});
@@ -63,7 +112,7 @@ std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double
   if (!type) {
     // the keys of every kind are known: only the type is reported
     for (const char* k : {"height", "period", "phase", "hs", "tp", "gamma", "seed", "components",
-                          "omega_min", "omega_max"})
+                          "omega_min", "omega_max", "spreading"})
       w.has(k);
     return std::nullopt;
   }
@@ -74,6 +123,12 @@ std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double
     const double phase =
         w.number("phase", Need::kOptional, NumberRule::range(-360, 360, "deg")).value_or(0.0) *
         kDeg;
+    if (w.has("spreading")) {
+      w.error("spreading",
+              "applies to irregular seas (type: jonswap or pierson_moskowitz): an airy wave "
+              "travels in one direction");
+      return std::nullopt;
+    }
     if (!height || !period) return std::nullopt;
     components.push_back(hydro::regular_component(*height, *period, direction, phase, depth, g));
     return components;
@@ -96,12 +151,14 @@ std::optional<std::vector<hydro::WaveComponent>> read_waves(MapReader& w, double
                                      spec.omega_min, spec.omega_max));
     return std::nullopt;
   }
+  hydro::DirectionSet directions = hydro::DirectionSet::long_crested();
+  if (w.has("spreading") && !read_spreading(w, spec.components, directions)) return std::nullopt;
   if (!hs || !tp) return std::nullopt;
   spec.hs = *hs;
   spec.tp = *tp;
   spec.direction = direction;
   try {
-    return hydro::irregular_components(spec, depth, g);
+    return hydro::irregular_components(spec, depth, g, directions);
   } catch (const std::invalid_argument& e) {
     // the spectrum's own checks: the band (omega_min alone above the default top)
     const std::string what = e.what();
@@ -458,9 +515,10 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
   hydro::Ramp ramp;
   bool wheeler = true;
   std::optional<hydro::WaveGridSpec> grid;
-  std::string grid_path;
+  std::string grid_path, kinematics_path;
   if (waves.IsDefined()) {
     MapReader wr(ctx.diag, waves, env.key_path("waves"));
+    kinematics_path = wr.key_path("kinematics");
     if (wr.valid()) {
       if (auto c = read_waves(wr, depth, g, ramp, wheeler)) components = std::move(*c);
       grid = read_kinematics(wr);
@@ -476,7 +534,16 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
     cr.finish();
   }
   hydro::WaveField field(depth, g, rho, std::move(components), ramp, wheeler);
-  if (grid && !field.components().empty()) {
+  const auto& comps = field.components();
+  const bool spread = std::any_of(comps.begin(), comps.end(), [&](const hydro::WaveComponent& c) {
+    return c.direction != comps.front().direction;
+  });
+  if (grid && spread) {
+    // checked here rather than left to WaveGrid, to name the key and the way out
+    ctx.diag.error(waves["kinematics"].Mark(), kinematics_path,
+                   "grid kinematics need a long-crested sea, and `spreading` spreads this one "
+                   "over several directions: use kinematics: exact (the default)");
+  } else if (grid && !comps.empty()) {
     try {
       field.set_grid(std::make_shared<const hydro::WaveGrid>(field, *grid));
     } catch (const std::invalid_argument& e) {
