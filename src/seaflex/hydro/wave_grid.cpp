@@ -12,21 +12,6 @@ namespace seaflex::hydro {
 
 namespace {
 
-// 4-point Lagrange weights at x for the nodes x0..x3 (any spacing)
-std::array<double, 4> lagrange4(const double* xn, double x) {
-  std::array<double, 4> w{};
-  for (int a = 0; a < 4; ++a) {
-    double num = 1.0, den = 1.0;
-    for (int b = 0; b < 4; ++b) {
-      if (b == a) continue;
-      num *= x - xn[b];
-      den *= xn[a] - xn[b];
-    }
-    w[static_cast<std::size_t>(a)] = num / den;
-  }
-  return w;
-}
-
 // the stencil on an equal lattice of spacing h: first index and weights (nodes i0 .. i0+3,
 // x between nodes i0+1 and i0+2)
 std::int64_t lattice_stencil(double x, double h, std::array<double, 4>& w) {
@@ -94,6 +79,14 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
   if (z_.size() < 4) z_ = {0.0, -bottom / 3.0, -2.0 * bottom / 3.0, -bottom};  // a cubic: 4
   if (!deep)
     for (double& z : z_) z = std::max(z, -depth);
+  z_den_.resize(z_.size() - 3);
+  for (std::size_t j0 = 0; j0 + 3 < z_.size(); ++j0)
+    for (std::size_t a = 0; a < 4; ++a) {
+      double den = 1.0;
+      for (std::size_t b = 0; b < 4; ++b)
+        if (b != a) den *= z_[j0 + a] - z_[j0 + b];
+      z_den_[j0][a] = 1.0 / den;
+    }
   if (static_cast<double>(comps.size()) * static_cast<double>(z_.size()) > kMaxFactors)
     throw std::invalid_argument(fmt::format(
         "{} components x {} levels is more than {:g} depth factors: use fewer components or "
@@ -264,12 +257,28 @@ WaveGrid::SliceCache& WaveGrid::slices_at(double t) const {
   // a slice is (5 J + 1) doubles and its flags: at most a quarter of the columns' budget
   if (!c.valid || c.grid != id_ || c.t != t || static_cast<double>(c.bytes) > spec_.max_bytes / 4) {
     c.stations.clear();
+    c.last = {};
     c.bytes = 0;
     c.grid = id_;
     c.t = t;
     c.valid = true;
   }
   return c;
+}
+
+bool WaveGrid::find_slices(SliceCache& cache, std::int64_t m0, std::array<Slice*, 4>& sl) const {
+  if (cache.last[0] && cache.last_m0 == m0) {
+    sl = cache.last;
+    return true;
+  }
+  for (std::size_t a = 0; a < 4; ++a) {
+    const auto it = cache.stations.find(m0 + static_cast<std::int64_t>(a));
+    if (it == cache.stations.end()) return false;
+    sl[a] = &it->second;
+  }
+  cache.last_m0 = m0;
+  cache.last = sl;
+  return true;
 }
 
 void WaveGrid::make_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
@@ -340,7 +349,12 @@ WaveGrid::Outcome WaveGrid::evaluate_slices(const std::array<Slice*, 4>& sl,
       std::clamp<std::ptrdiff_t>(j - 1, 0, static_cast<std::ptrdiff_t>(J) - 4));
   for (const Slice* s : sl)
     if (!s->filled[j0 / kBlock] || !s->filled[(j0 + 3) / kBlock]) return Outcome::kFill;
-  const std::array<double, 4> wz = lagrange4(z_.data() + j0, z_eval);
+  // 4-point Lagrange weights in z with the stored denominators
+  const double* zn = z_.data() + j0;
+  const double d0 = z_eval - zn[0], d1 = z_eval - zn[1], d2 = z_eval - zn[2], d3 = z_eval - zn[3];
+  const std::array<double, 4>& den = z_den_[j0];
+  const std::array<double, 4> wz{d1 * d2 * d3 * den[0], d0 * d2 * d3 * den[1],
+                                 d0 * d1 * d3 * den[2], d0 * d1 * d2 * den[3]};
   std::array<double, 5> v{};
   for (std::size_t a = 0; a < 4; ++a) {
     const double* col = sl[a]->values.data() + j0;
@@ -363,12 +377,7 @@ double WaveGrid::elevation(double x, double y, double t) const {
   const std::int64_t m0 = lattice_stencil(x * cos_b_ + y * sin_b_, spec_.ds, ws);
   SliceCache& cache = slices_at(t);
   std::array<Slice*, 4> sl{};
-  bool have = true;
-  for (int a = 0; a < 4 && have; ++a) {
-    const auto it = cache.stations.find(m0 + a);
-    have = it != cache.stations.end();
-    if (have) sl[static_cast<std::size_t>(a)] = &it->second;
-  }
+  const bool have = find_slices(cache, m0, sl);
   if (!have) {
     const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
     const std::unique_lock<std::shared_mutex> lock(mutex_);
@@ -392,12 +401,7 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   const std::int64_t m0 = lattice_stencil(p.x() * cos_b_ + p.y() * sin_b_, spec_.ds, ws);
   SliceCache& cache = slices_at(t);
   std::array<Slice*, 4> sl{};
-  bool have = true;
-  for (int a = 0; a < 4 && have; ++a) {
-    const auto it = cache.stations.find(m0 + a);
-    have = it != cache.stations.end();
-    if (have) sl[static_cast<std::size_t>(a)] = &it->second;
-  }
+  const bool have = find_slices(cache, m0, sl);
   FluidKinematics out;
   std::size_t j0 = 0;
   // the common case: this thread's slices at t hold the point's stations and levels

@@ -152,7 +152,13 @@ class WaveGrid {
     bool valid = false;
     std::size_t bytes = 0;
     std::unordered_map<std::int64_t, Slice> stations;
+    // the last four stations asked for (consecutive points of a line share them; map nodes
+    // do not move until the map is cleared)
+    std::int64_t last_m0 = 0;
+    std::array<Slice*, 4> last{};
   };
+  // the four slices m0 .. m0+3 of this thread's cache if all are there; caller has cache
+  bool find_slices(SliceCache& cache, std::int64_t m0, std::array<Slice*, 4>& sl) const;
   static thread_local SliceCache t_slices_;
   // this thread's slice cache, emptied when it holds another time, grid or too much memory
   SliceCache& slices_at(double t) const;
@@ -176,6 +182,8 @@ class WaveGrid {
   WaveGridSpec spec_;
   double cos_b_ = 1.0, sin_b_ = 0.0;
   std::vector<double> z_;
+  // 1 / prod_{b != a} (z_{j0+a} - z_{j0+b}): the Lagrange denominators of the 4 levels from j0
+  std::vector<std::array<double, 4>> z_den_;
   // depth factors f_h, f_v, f_p of component i at level j: [j * N + i]
   std::vector<double> fh_, fv_, fp_;
   mutable std::shared_mutex mutex_;
