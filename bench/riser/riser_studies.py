@@ -83,7 +83,7 @@ def measure_transient(seaflex, n, folder, tol=1e-4, duration=600.0, dt=0.1, all_
         rows = list(csv.DictReader(f))
     return dict(angle_max=max(ang), angle_end=ang[-1], bow=max(float(r["x.max"]) for r in rows),
                 moment=max(float(r["moment.max"]) for r in rows), ts=ts, wall=wall,
-                summary=stdout.strip().splitlines()[-1] if stdout.strip() else "")
+                summary=next((l for l in stdout.splitlines() if l.startswith("dynamics:")), ""))
 
 
 def waves(args):
