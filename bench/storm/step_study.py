@@ -33,7 +33,7 @@ RAMP = 30.0
 
 def variant(n, kinematics, duration, step, output):
     text = storm_model(n, 200, kinematics, duration, "csv", RAO)
-    text, k = re.subn(r"\n  time_step: [0-9.]+\n", f"\n  time_step: {step:g}\n", text)
+    text, k = re.subn(r"\n  time_step: [0-9.]+\n", f"\n  time_step: {step:.12g}\n", text)
     assert k == 1
     text, k = re.subn(r"\n  output_interval: [0-9.]+\n", f"\n  output_interval: {output:g}\n",
                       text)
