@@ -3,9 +3,8 @@
 "Dynamic riser benchmarks"): bench/riser/riser_transient_n{10,100,1000}.yaml and
 riser_waves_n{10,100,1000}.yaml, the riser of bench/riser/riser_n*.yaml (issue 6).
     /usr/bin/python3 bench/riser/make_riser_variants.py
-transient_model() and waves_model() also give the variants of
-the verification (tests/verification/riser_variants/) and the studies
-(bench/riser/riser_studies.py).
+transient_model() and waves_model() also give the variants of the verification
+(tests/verification/riser_variants/) and of the studies (bench/riser/riser_studies.py).
 
 The riser: vertical, 300 m, OD 0.7 m, ID 0.4 m, E = 210 GPa, 7850 kg/m^3, empty bore, in
 300 m of water; pinned at the seabed, the top node held in x and y at the surface (z free)
@@ -16,9 +15,10 @@ straight riser". seaflex's current is steady (it cannot be ramped: model-format 
 the riser starts straight and at rest (initial_state: model) with the current, its
 weight and the top force all acting from t = 0: a step load. Fixed steps of 0.1 to 0.02 s
 refuse it (the first step's error estimate, model-format 13), so the steps are adaptive
-(step_control: adaptive, time_step 0.1 s the largest, error_tolerance 1e-4: the default 1e-6
-keeps resolving the undamped axial waves of the sudden weight and top force). The riser swings downstream, its
-oscillation damped by the relative-velocity drag, and settles on the static bow.
+(step_control: adaptive, time_step 0.1 s the largest, error_tolerance 1e-4: the default
+1e-6 keeps resolving the undamped axial waves of the sudden weight and top force). The riser
+swings downstream, its oscillation damped by the relative-velocity drag, and settles on the
+static bow.
 
 waves: a regular (Airy) wave H = 8 m, T = 12 s travelling with a 1 m/s current (+x),
 from static equilibrium in the current (initial_state: statics), the wave ramped in over
