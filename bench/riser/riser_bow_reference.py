@@ -137,6 +137,11 @@ if __name__ == "__main__":
         print(f"M = {M}: top z = {z[-1]:.6f} m, max w = {w.max():.8f} m at z = {z[w.argmax()]:.2f},"
               f" top angle {top_angle_deg(z, w):.6f} deg, bottom V {V[0]:.6e} N")
         print("  w at z = -300, -270, ... 0:", " ".join(f"{x:.6f}" for x in at(z, w, zq)))
+    rod = solve_rod(a.current)
+    xs = rod.sol(np.linspace(0.0, length, 3001))[0]
+    print(f"exact rod: max x = {xs.max():.8f} m, top z = {rod.sol(length)[1]:.6f} m, top angle "
+          f"{math.degrees(abs(rod.sol(length)[2])):.6f} deg, seabed angle "
+          f"{math.degrees(abs(rod.sol(0.0)[2])):.6f} deg")
 
 
 def solve_rod(U=3.0, nodes=601, tol=1e-6):

@@ -111,6 +111,9 @@ def waves(args):
 
 
 def transient(args):
+    print("| N | error_tolerance | max top angle (deg) | max bow (m) | max bending moment (N m) | "
+          "top angle at the end (deg) | wall (s) | run |")
+    print("|---|---|---|---|---|---|---|---|")
     for n in args.elements:
         with tempfile.TemporaryDirectory() as tmp:
             for tol in args.tolerances:
