@@ -126,24 +126,6 @@ def top_angle_deg(z, w):
     return math.degrees(math.atan(abs(slope)))
 
 
-if __name__ == "__main__":
-    p = argparse.ArgumentParser()
-    p.add_argument("--current", type=float, default=3.0)
-    p.add_argument("--intervals", type=int, default=3000)
-    a = p.parse_args()
-    for M in (a.intervals // 2, a.intervals):
-        z, w, V = solve(a.current, M)
-        zq = -300 + 30 * np.arange(11)
-        print(f"M = {M}: top z = {z[-1]:.6f} m, max w = {w.max():.8f} m at z = {z[w.argmax()]:.2f},"
-              f" top angle {top_angle_deg(z, w):.6f} deg, bottom V {V[0]:.6e} N")
-        print("  w at z = -300, -270, ... 0:", " ".join(f"{x:.6f}" for x in at(z, w, zq)))
-    rod = solve_rod(a.current)
-    xs = rod.sol(np.linspace(0.0, length, 3001))[0]
-    print(f"exact rod: max x = {xs.max():.8f} m, top z = {rod.sol(length)[1]:.6f} m, top angle "
-          f"{math.degrees(abs(rod.sol(length)[2])):.6f} deg, seabed angle "
-          f"{math.degrees(abs(rod.sol(0.0)[2])):.6f} deg")
-
-
 def solve_rod(U=3.0, nodes=601, tol=1e-6):
     """The same riser as a geometrically exact planar rod (no small-angle approximation),
     solved by collocation (scipy.integrate.solve_bvp, 4th order) over the unstretched arc
@@ -199,3 +181,21 @@ def rod_x_at(sol, zq):
         sq = brentq(lambda s: sol.sol(s)[1] - zz, 0.0, length)
         out.append(sol.sol(sq)[0])
     return np.array(out)
+
+
+if __name__ == "__main__":
+    p = argparse.ArgumentParser()
+    p.add_argument("--current", type=float, default=3.0)
+    p.add_argument("--intervals", type=int, default=3000)
+    a = p.parse_args()
+    for M in (a.intervals // 2, a.intervals):
+        z, w, V = solve(a.current, M)
+        zq = -300 + 30 * np.arange(11)
+        print(f"M = {M}: top z = {z[-1]:.6f} m, max w = {w.max():.8f} m at z = {z[w.argmax()]:.2f},"
+              f" top angle {top_angle_deg(z, w):.6f} deg, bottom V {V[0]:.6e} N")
+        print("  w at z = -300, -270, ... 0:", " ".join(f"{x:.6f}" for x in at(z, w, zq)))
+    rod = solve_rod(a.current)
+    xs = rod.sol(np.linspace(0.0, length, 3001))[0]
+    print(f"exact rod: max x = {xs.max():.8f} m, top z = {rod.sol(length)[1]:.6f} m, top angle "
+          f"{math.degrees(abs(rod.sol(length)[2])):.6f} deg, seabed angle "
+          f"{math.degrees(abs(rod.sol(0.0)[2])):.6f} deg")
