@@ -46,7 +46,7 @@ F_top = w_s * length + 2.0e6  # the benchmark's top force (bench/riser/riser_n*.
 Cd = 0.65
 
 
-def solve(U=3.0, M=3000, tol=1e-13, max_iter=200):
+def solve(U=3.0, M=3000, tol=1e-12, max_iter=200):
     """The static bow: returns (z, w, V) on M + 1 equally spaced points from the seabed
     (z = -300) to the top, the top's height solved for."""
     qd = 0.5 * rho_w * Cd * od * U * U
@@ -110,6 +110,8 @@ def solve(U=3.0, M=3000, tol=1e-13, max_iter=200):
         w, H = w_new, H_new
         if change < tol * length:
             break
+    else:
+        raise RuntimeError(f"fixed point not converged in {max_iter} iterations: {change:.2e} m")
     z = z_b + (H / M) * np.arange(M + 1)
     return z, w, V
 
@@ -171,16 +173,6 @@ def solve_rod(U=3.0, nodes=601, tol=1e-6):
         raise RuntimeError(sol.message)
     return sol
 
-
-def rod_x_at(sol, zq):
-    """x of the rod at heights zq (z is monotonic along s), by the collocation polynomial."""
-    from scipy.optimize import brentq
-
-    out = []
-    for zz in np.atleast_1d(zq):
-        sq = brentq(lambda s: sol.sol(s)[1] - zz, 0.0, length)
-        out.append(sol.sol(sq)[0])
-    return np.array(out)
 
 
 if __name__ == "__main__":
