@@ -9,7 +9,8 @@ packages=(build-essential cmake ninja-build pkg-config git python3 clang-format
           libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libcli11-dev libfmt-dev
           libgtest-dev libgmock-dev libbenchmark-dev python3-matplotlib libhdf5-dev python3-h5py
           python3-vtk9 clang libclang-rt-14-dev
-          pybind11-dev python3-dev python3-numpy python3-pandas python3-distributed python3-pytest)
+          pybind11-dev python3-dev python3-numpy python3-pandas python3-distributed python3-pytest
+          python3-scipy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

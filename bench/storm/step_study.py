@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""The largest step that keeps the storm's statistics within 1 % (issue 21 item 4;
+docs/performance.md, "Time step of the storm"). Runs a shorter window of
+bench/storm/storm_n100.yaml (make_storm.storm_model with dynamics.duration changed, 30 s
+ramp included) at several time steps and a reference at a smaller step, and tabulates
+    max top effective tension, max bending moment along the riser, max von Mises stress
+    along the riser (riser.envelope.csv), RMS of the riser's top angle from the vertical
+    over t >= 30 s (from the top node's slope, output channel riser.n<N>.slope_*)
+against the reference, with the wall time of each run (one thread).
+    /usr/bin/python3 bench/storm/step_study.py SEAFLEX [--duration 630]
+        [--steps 0.4 0.2 0.1 0.05] [--reference 0.025] [--kinematics grid]
+        [--reference-kinematics exact] [--elements 100]
+Every run writes its rows at the same times, every --output s (default 0.4 s, a multiple
+of every step), so the maxima are taken over the same samples whatever the step."""
+import argparse
+import csv
+import math
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+here = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(here))
+from make_storm import storm_model  # noqa: E402
+
+RAO = str(here.parent.parent / "examples" / "drilling_rig_raos.csv")
+RAMP = 30.0
+
+
+def variant(n, kinematics, duration, step, output):
+    text = storm_model(n, 200, kinematics, duration, "csv", RAO)
+    text, k = re.subn(r"\n  time_step: [0-9.]+\n", f"\n  time_step: {step:.12g}\n", text)
+    assert k == 1
+    text, k = re.subn(r"\n  output_interval: [0-9.]+\n", f"\n  output_interval: {output:g}\n",
+                      text)
+    assert k == 1
+    text = text.replace("  beam_results: envelope\n",
+                        f"  beam_results: envelope\n  node_slopes: true\n"
+                        f"  channels: [\"riser.n{n}.*\", \"wave.eta.riser\"]\n")
+    return text
+
+
+def run(seaflex, text, folder, name):
+    path = pathlib.Path(folder) / f"{name}.yaml"
+    path.write_text(text)
+    out = pathlib.Path(folder) / name
+    t0 = time.time()
+    res = subprocess.run([seaflex, "run", str(path), "-o", str(out)], capture_output=True,
+                         text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
+    wall = time.time() - t0
+    summary = next((l for l in res.stdout.splitlines() if l.startswith("dynamics:")), "")
+    if res.returncode != 0:
+        return dict(failed=f"exit {res.returncode}: {res.stderr.strip()[-300:]}", wall=wall)
+    return dict(statistics(out), wall=wall, summary=summary)
+
+
+def statistics(folder):
+    with open(folder / "riser.envelope.csv") as f:
+        rows = list(csv.DictReader(f))
+    top_tension = float(rows[-1]["tension_effective.max"])
+    moment = max(float(r["moment.max"]) for r in rows)
+    mises = max(float(r["stress_von_mises.max"]) for r in rows)
+    with open(folder / "timeseries.csv") as f:
+        ts = list(csv.DictReader(f))
+    top = [k[: -len(".slope_x")] for k in ts[0] if k.endswith(".slope_x")][0]
+    ang = [math.atan2(math.hypot(float(r[top + ".slope_x"]), float(r[top + ".slope_y"])),
+                      float(r[top + ".slope_z"])) for r in ts if float(r["time"]) >= RAMP - 1e-9]
+    rms = math.degrees(math.sqrt(sum(a * a for a in ang) / len(ang)))
+    return dict(top_tension=top_tension, moment=moment, mises=mises, angle_rms=rms)
+
+
+KEYS = (("top_tension", "max top tension (N)"), ("moment", "max bending moment (N m)"),
+        ("mises", "max von Mises (Pa)"), ("angle_rms", "RMS top angle (deg)"))
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("seaflex")
+    p.add_argument("--duration", type=float, default=630.0)
+    p.add_argument("--elements", type=int, default=100)
+    p.add_argument("--steps", type=float, nargs="+", default=[0.4, 0.2, 0.1, 0.05])
+    p.add_argument("--reference", type=float, default=0.025)
+    p.add_argument("--kinematics", default="grid")
+    p.add_argument("--reference-kinematics", default="exact")
+    p.add_argument("--output", type=float, default=0.4)
+    a = p.parse_args()
+    res = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        runs = [(h, a.kinematics) for h in a.steps] + [(a.reference, a.kinematics)]
+        if a.reference_kinematics != a.kinematics:
+            runs.append((a.reference, a.reference_kinematics))
+        for h, kin in runs:
+            res[(h, kin)] = r = run(a.seaflex, variant(a.elements, kin, a.duration, h, a.output),
+                                    tmp, f"storm_{kin}_{h:g}")
+            print(f"# h = {h:g} s, {kin}: {r.get('failed') or r['summary']} "
+                  f"({r['wall']:.1f} s wall)", flush=True)
+    ref = res[(a.reference, a.reference_kinematics)]
+    print(f"\nReference: h = {a.reference:g} s, kinematics {a.reference_kinematics}")
+    print("| h (s) | kinematics | " + " | ".join(f"{t} (error)" for _, t in KEYS) +
+          " | wall (s) |")
+    print("|---|---|" + "---|" * len(KEYS) + "---|")
+    for (h, kin), r in sorted(res.items(), key=lambda kv: (-kv[0][0], kv[0][1])):
+        if "failed" in r:
+            print(f"| {h:g} | {kin} | failed: {r['failed']} |" + " |" * len(KEYS))
+            continue
+        cells = " | ".join(f"{r[k]:.6g} ({r[k] / ref[k] - 1:+.2e})" for k, _ in KEYS)
+        print(f"| {h:g} | {kin} | {cells} | {r['wall']:.1f} |")
+
+
+if __name__ == "__main__":
+    main()
