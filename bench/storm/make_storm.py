@@ -87,7 +87,7 @@ bodies:
     density: 7850
 hydrodynamics:
   # 3 Gauss points per element for the Morison load (default 5): on these 3 m (0.3 m)
-  # elements the 630 s storm's max bending moment moves by 1.3e-6, the run is a third faster
+  # elements the 330 s storm's max bending moment moves by 1.3e-6, the 3-hour run is 19 % faster
   # (docs/performance.md, "Morison Gauss points")
   riser: {{cd: 0.65, cm: 1.6, gauss_points: 3}}
 supports:
@@ -108,10 +108,6 @@ statics:
 dynamics:
   integrator: generalized_alpha
   rho_inf: 0.8
-  # Newton tolerance 1e-8 (default 1e-10): 2.7 iterations per step instead of 3.2, the max
-  # bending moment of a 330 s storm within 2.4e-5 (docs/performance.md, "Newton iterations,
-  # predictor and tolerance"; 1e-6 would cost 6 %)
-  tolerance: 1e-8
   time_step: 0.1
   duration: {duration:g}
   output_interval: 0.5
