@@ -39,3 +39,39 @@ TEST(SparseBlockAssembler, RejectsOutOfRangeAndLateDeclarations) {
   const std::vector<Index> ok{0};
   EXPECT_THROW(a.declare_block(ok, ok), std::logic_error);
 }
+
+// product mode: the same add() calls give (sum of the blocks) x without touching the
+// matrix; checked against the assembled matrix times x (round-off: 1e-14 of |A||x|)
+TEST(SparseBlockAssembler, ProductModeEqualsTheAssembledMatrixTimesAVector) {
+  math::SparseBlockAssembler a(5, 5);
+  const std::vector<Index> d1{0, 1, 2}, d2{2, 3, 4}, rows{4}, cols{0, 1};
+  const auto b1 = a.declare_block(d1, d1);
+  const auto b2 = a.declare_block(d2, d2);
+  const auto b3 = a.declare_block(rows, cols);
+  const auto b3t = a.declare_block(cols, rows);
+  a.finalize();
+  const MatX m1 = MatX::Random(3, 3), m2 = MatX::Random(3, 3), m3 = MatX::Random(1, 2);
+  auto add_all = [&] {
+    a.add(b1, m1);
+    a.add(b2, m2, 2.0);
+    a.add(b3, m3, -0.5);
+    a.add_transposed(b3t, m3, 3.0);
+  };
+  a.set_zero();
+  add_all();
+  const MatX assembled = MatX(a.matrix());
+  const VecX x = VecX::Random(5);
+  VecX y = VecX::Zero(5);
+  a.begin_product(x, y);
+  EXPECT_TRUE(a.in_product());
+  add_all();
+  a.end_product();
+  EXPECT_FALSE(a.in_product());
+  const VecX ref = assembled * x;
+  EXPECT_LT((y - ref).norm(), 1e-14 * assembled.norm() * x.norm());
+  EXPECT_GT(ref.norm(), 0.1);
+  // the matrix was left as it was
+  EXPECT_EQ((MatX(a.matrix()) - assembled).norm(), 0.0);
+  VecX wrong = VecX::Zero(4);
+  EXPECT_THROW(a.begin_product(x, wrong), std::invalid_argument);
+}

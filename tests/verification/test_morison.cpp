@@ -467,3 +467,66 @@ hydrodynamics:
 }
 
 }  // namespace
+
+// fluid_reuse (forces/morison_beam.hpp): the fluid found at a Gauss point is used again
+// while the time is the same and the point has moved by at most delta. A vertical pipe
+// (z from -35 to -10 m, 40 m of water) in an Airy wave (H = 4 m, T = 8 s) and a 0.5 m/s
+// current, delta = 1 mm. Moving every node by dr (|dr|_inf = 0.8 delta, slopes kept, so
+// every point moves by dr): the load with reuse is exactly the load at the old place, and
+// it differs from the load at the new place by at most its bound per unit length
+//   rho Cd D/2 (2 |u_r| + |du|) |du| + rho A Cm |da|,  |du| <= |grad u|_F |dr|_2,
+//   |da| <= w |du|,  |grad u|_F <= 2 k a w cosh(k (z + d)) / sinh(k d)
+// (the four entries of the Airy velocity gradient), times the 25 m length. Moving by
+// 2 delta or changing the time evaluates the sea again: the loads are then identical.
+TEST(Morison, FluidReuseStaysWithinItsBound) {
+  const double d = 40, H = 4, T = 8, D = 1.0, Cd = 1.0, Cm = 2.0, rho = 1025, g = 9.81;
+  const double delta = 1e-3, L = 25, zt = -10, U = 0.5;
+  const double w = 2 * kPi / T, k = hydro::wave_number(w, d, g), a = H / 2;
+  auto model = [](const char* reuse) {
+    return io::load_model_text(std::string(R"(
+environment:
+  gravity: 9.81
+  water: {density: 1025, depth: 40}
+  current: {speed: 0.5, direction: 0}
+  waves: {type: airy, height: 4, period: 8, direction: 0}
+bodies:
+  pipe: {type: ancf_beam, start: [0, 0, -35], end: [0, 0, -10], elements: 5,
+         outer_diameter: 1.0, inner_diameter: 0.9, youngs_modulus: 210e9, density: 7850}
+hydrodynamics:
+  pipe: {cd: 1.0, cm: 2.0, buoyancy: false)") +
+                                   reuse + "}\n",
+                               "pipe.yaml");
+  };
+  const io::Model with = model(", fluid_reuse: 0.001"), without = model("");
+  const Force& fw = force_named(with, "pipe.morison");
+  const Force& fo = force_named(without, "pipe.morison");
+  auto resultant = [](const io::Model& m, const Force& f, const State& s) {
+    return beam_resultant(force_vector(m, f, s), 0, 6);
+  };
+  auto moved = [](State s, const Vec3& dr) {
+    for (int n = 0; n < 6; ++n) s.q.segment<3>(6 * n) += dr;
+    return s;
+  };
+  const double grad_u = 2 * k * a * w * std::cosh(k * (zt + d)) / std::sinh(k * d);
+  const double u_max = a * w * std::cosh(k * (zt + d)) / std::sinh(k * d) * std::sqrt(2.0) + U;
+  const Vec3 dr = 0.8 * delta * Vec3(1, -1, 1);
+  const double du = grad_u * dr.norm(), da = w * du;
+  const double bound =
+      L * (0.5 * rho * Cd * D * (2 * u_max + du) * du + rho * 0.25 * kPi * D * D * Cm * da);
+  for (const double t : {0.7, 1.9, 3.4, 6.1}) {
+    State s = with.system->initial_state();
+    s.t = t;
+    const Vec3 f0 = resultant(with, fw, s);  // first call: found, kept
+    EXPECT_EQ((f0 - resultant(without, fo, s)).norm(), 0.0) << t;
+    const State s1 = moved(s, dr);
+    const Vec3 reused = resultant(with, fw, s1), exact = resultant(without, fo, s1);
+    EXPECT_LT((reused - f0).norm(), 1e-12 * f0.norm()) << t;  // the kept fluid
+    EXPECT_GT((reused - exact).norm(), 1e-3 * bound) << t;    // ... which is not the new one
+    EXPECT_LT((reused - exact).norm(), bound) << t;
+    const State s2 = moved(s, 2.0 * delta * Vec3(1, 0, 0));  // beyond delta: found again
+    EXPECT_EQ((resultant(with, fw, s2) - resultant(without, fo, s2)).norm(), 0.0) << t;
+    State s3 = s;
+    s3.t = t + 0.01;  // another time: found again
+    EXPECT_EQ((resultant(with, fw, s3) - resultant(without, fo, s3)).norm(), 0.0) << t;
+  }
+}

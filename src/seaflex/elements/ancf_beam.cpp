@@ -212,6 +212,10 @@ double AncfBeam::mass() const {
   return m;
 }
 
+double AncfBeam::length_scale() const {
+  return *std::min_element(element_lengths_.begin(), element_lengths_.end());
+}
+
 std::string AncfBeam::summary() const {
   if (sections_.size() > 1)
     return fmt::format(

@@ -75,6 +75,8 @@ class AncfBeam : public Body {
   std::string coordinate_name(Index local) const override;
   void add_channels(ChannelList& channels) const override;
   std::string summary() const override;
+  /// The shortest element (m).
+  double length_scale() const override;
 
   int num_elements() const { return static_cast<int>(element_lengths_.size()); }
   int num_nodes() const { return num_elements() + 1; }

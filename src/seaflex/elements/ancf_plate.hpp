@@ -6,6 +6,7 @@
 // The stress-free shape is the flat rectangle; p1, p2 are arc lengths along t1, t2.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -53,6 +54,8 @@ class AncfPlate : public Body {
   std::string coordinate_name(Index local) const override;
   void add_channels(ChannelList& channels) const override;
   std::string summary() const override;
+  /// The shorter element side (m).
+  double length_scale() const override { return std::min(a_, b_); }
 
   int nx() const { return geometry_.nx; }
   int ny() const { return geometry_.ny; }

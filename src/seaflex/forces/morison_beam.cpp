@@ -32,6 +32,20 @@ MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
   if (coefficients_.size() != beam_.sections().size())
     throw std::invalid_argument("MorisonBeam: one set of coefficients per beam section needed");
   rule_ = math::gauss_legendre_unit(coefficients_.front().gauss_points);
+  reuse_ = coefficients_.front().fluid_reuse;
+  if (!(reuse_ >= 0.0)) throw std::invalid_argument("MorisonBeam: fluid_reuse must be >= 0");
+  if (reuse_ > 0.0)
+    kept_.resize(static_cast<std::size_t>(beam_.num_elements()) * rule_.points.size());
+}
+
+hydro::FluidPoint MorisonBeam::fluid_at(int k, std::size_t g, const Vec3& r, double t) const {
+  if (reuse_ <= 0.0) return ocean_->fluid(r, t);
+  KeptFluid& kept = kept_[static_cast<std::size_t>(k) * rule_.points.size() + g];
+  if (kept.t == t && (r - kept.r).lpNorm<Eigen::Infinity>() <= reuse_) return kept.fluid;
+  kept.t = t;
+  kept.r = r;
+  kept.fluid = ocean_->fluid(r, t);
+  return kept.fluid;
 }
 
 bool MorisonBeam::constant_mass() const {
@@ -54,15 +68,14 @@ std::pair<double, double> MorisonBeam::wet_interval(const State& state, int k) c
   return hydro::wet_interval(above);
 }
 
-MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c, const Vec3& r,
-                                               const Vec3& rp, const Vec3& rdot, double t,
-                                               double load_factor, bool derivatives,
-                                               bool with_buoyancy) const {
+MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c,
+                                               const hydro::FluidPoint& fl, const Vec3& rp,
+                                               const Vec3& rdot, double load_factor,
+                                               bool derivatives, bool with_buoyancy) const {
   const double rho = ocean_->rho();
   const double D = c.diameter;
   const double area = 0.25 * std::numbers::pi * D * D;
   PointLoad out;
-  const hydro::FluidPoint fl = ocean_->fluid(r, t);
   const double stretch = rp.norm();
   const Vec3 tt = rp / stretch;
   const Mat3 P = Mat3::Identity() - tt * tt.transpose();
@@ -130,7 +143,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       const Vec4 shx = ancf_cable::shape_dx(xi, l);
       const Vec3 r = E * sh, rp = E * shx, rdot = Ed * sh;
       const bool deriv = want_matrix && (s.kq != 0.0 || s.kv != 0.0);
-      const PointLoad pl = point_load(c, r, rp, rdot, state.t, load_factor, deriv);
+      const PointLoad pl = point_load(c, fluid_at(k, g, r, state.t), rp, rdot, load_factor, deriv);
       if (target.forces) {
         auto Q = target.forces->segment<12>(beam_.node_index(k));
         for (int i = 0; i < 4; ++i) Q.segment<3>(3 * i) += (dx * sh[i]) * pl.f;  // eq. (177)
@@ -156,8 +169,8 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         add_shape_product(K, sh, shx, D, s.kq * dx);
       }
       if (s.kv != 0.0) add_shape_product(K, sh, sh, pl.df_dv, -s.kv * dx);
-      if (s.kq != 0.0) {
-        add_shape_product(K, sh, shx, pl.df_drp, -s.kq * dx);
+      if (s.kq != 0.0) add_shape_product(K, sh, shx, pl.df_drp, -s.kq * dx);
+      if (s.kq != 0.0 && reuse_ <= 0.0) {
         // position: central differences of the fluid field (current profile, waves)
         Mat3 df_dr;
         const double h = 1e-4;
@@ -166,9 +179,10 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
           rp_[j] += h;
           rm_[j] -= h;
           // buoyancy is uniform where wet: left out, so the surface is no step
-          df_dr.col(j) = (point_load(c, rp_, rp, rdot, state.t, load_factor, false, false).f -
-                          point_load(c, rm_, rp, rdot, state.t, load_factor, false, false).f) /
-                         (2.0 * h);
+          df_dr.col(j) =
+              (point_load(c, ocean_->fluid(rp_, state.t), rp, rdot, load_factor, false, false).f -
+               point_load(c, ocean_->fluid(rm_, state.t), rp, rdot, load_factor, false, false).f) /
+              (2.0 * h);
         }
         add_shape_product(K, sh, sh, df_dr, -s.kq * dx);
       }

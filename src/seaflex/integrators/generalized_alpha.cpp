@@ -58,6 +58,8 @@ void GeneralizedAlpha::prepare(const Dae& dae) {
   m_ = dae.num_constraints();
   eval_ = dae.make_eval();
   constant_mass_ = dae.constant_mass();
+  product_ = dae.supports_product();
+  length_scale_ = dae.length_scale();
   if (!constant_mass_) mass_eval_ = dae.make_eval();
   if (m_ > 0 && s_.constraints == ConstraintLevel::kStabilizedIndex2)
     projection_eval_ = dae.make_eval();
@@ -239,6 +241,10 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
                                   VecX& out) {
   const SpMat* M = &mass_;
   if (!constant_mass_ && in_eval) {
+    if (product_) {  // M(q) a summed with the forces, element by element
+      out = eval_.product.head(n_);
+      return;
+    }
     M = &eval_.kkt.matrix();  // assembled with the forces (km = 1, kq = kv = 0)
   } else if (!constant_mass_) {
     DaeRequest req;
@@ -246,7 +252,12 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
     req.constraints = false;
     req.matrix = true;
     req.scales.km = 1.0;
+    if (product_) req.product_with = &a;
     instrumented::evaluate(dae, state, req, mass_eval_, stats_);
+    if (product_) {
+      out = mass_eval_.product.head(n_);
+      return;
+    }
     M = &mass_eval_.kkt.matrix();
   }
   // out = M a over the top-left n x n block, without a temporary
@@ -359,9 +370,10 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
       req.scales = MatrixScales{1.0, 1.0 / bp, gp / bp};
       req.multiplier_hessian = true;
       req.acceleration = &a_;      // kq d(M(q) a)/dq
-    } else if (!constant_mass_) {  // M(q) in the same pass as the forces
+    } else if (!constant_mass_) {  // M(q) a in the same pass as the forces
       req.matrix = true;
       req.scales = MatrixScales{1.0, 0.0, 0.0};
+      if (product_) req.product_with = &a_;
     }
     try {
       instrumented::evaluate(dae, trial_, req, eval_, stats_);
@@ -418,7 +430,8 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     const double l_now = m_ > 0 ? trial_.lambda.lpNorm<Eigen::Infinity>() : 0.0;
     a_tol = std::max(s_.tolerance * std::max(a_scale_, a_now), kUlps * a_now);
     f_tol = m_ > 0 ? std::max(s_.tolerance * std::max(f_scale_, l_now), kUlps * l_now) : 1.0;
-    q_tol = std::max(s_.tolerance * q_scale_, kUlps * trial_.q.lpNorm<Eigen::Infinity>());
+    q_tol = std::max(s_.tolerance * std::min(q_scale_, length_scale_),
+                     kUlps * trial_.q.lpNorm<Eigen::Infinity>());
     last_da = n_ > 0 ? bp * sol_.head(n_).cwiseAbs().maxCoeff(&worst) : 0.0;
     last_dl = m_ > 0 ? bp * sol_.tail(m_).lpNorm<Eigen::Infinity>() : 0.0;
     last_dy = index2 ? dy_.lpNorm<Eigen::Infinity>() : 0.0;

@@ -284,6 +284,11 @@ MorisonBeamCoefficients read_beam_coefficients(MapReader& r, const MorisonBeamCo
             "required when contents_density is given and the beam has no "
             "inner_diameter");
   if (!section) c.gauss_points = r.integer("gauss_points", Need::kOptional, 1, 20).value_or(5);
+  // the fluid kept per Gauss point within one time (forces/morison_beam.hpp); at most 0.1 m,
+  // where its error (delta |grad u|) would reach a few per cent of the wave velocity
+  if (!section)
+    c.fluid_reuse =
+        r.number("fluid_reuse", Need::kOptional, NumberRule::range(0.0, 0.1, "m")).value_or(0.0);
   return c;
 }
 

@@ -79,8 +79,29 @@ void SparseBlockAssembler::set_zero() {
   std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
 }
 
+void SparseBlockAssembler::begin_product(const VecX& x, VecX& y) {
+  if (x.size() != cols_ || y.size() != rows_)
+    throw std::invalid_argument("SparseBlockAssembler: product vectors of the wrong size");
+  product_x_ = &x;
+  product_y_ = &y;
+}
+
+void SparseBlockAssembler::end_product() {
+  product_x_ = nullptr;
+  product_y_ = nullptr;
+}
+
 void SparseBlockAssembler::add(BlockId id, const Eigen::Ref<const MatX>& block, double scale) {
   const Block& blk = blocks_[id];
+  if (product_x_) {
+    const Index* rows = row_index_.data() + blk.row_off;
+    const Index* cols = col_index_.data() + blk.col_off;
+    for (Index j = 0; j < blk.cols; ++j) {
+      const double xj = scale * (*product_x_)[cols[j]];
+      for (Index i = 0; i < blk.rows; ++i) (*product_y_)[rows[i]] += block(i, j) * xj;
+    }
+    return;
+  }
   double* values = matrix_.valuePtr();
   const int* pos = value_pos_.data() + blk.first;
   for (Index j = 0; j < blk.cols; ++j)
@@ -90,6 +111,15 @@ void SparseBlockAssembler::add(BlockId id, const Eigen::Ref<const MatX>& block, 
 void SparseBlockAssembler::add_transposed(BlockId mirrored_id, const Eigen::Ref<const MatX>& block,
                                           double scale) {
   const Block& blk = blocks_[mirrored_id];  // blk.rows == block.cols()
+  if (product_x_) {  // y[rows_m[i]] += block(j, i) x[cols_m[j]] with the mirrored lists
+    const Index* rows = row_index_.data() + blk.row_off;
+    const Index* cols = col_index_.data() + blk.col_off;
+    for (Index j = 0; j < blk.cols; ++j) {
+      const double xj = scale * (*product_x_)[cols[j]];
+      for (Index i = 0; i < blk.rows; ++i) (*product_y_)[rows[i]] += block(j, i) * xj;
+    }
+    return;
+  }
   double* values = matrix_.valuePtr();
   const int* pos = value_pos_.data() + blk.first;
   for (Index j = 0; j < blk.cols; ++j)

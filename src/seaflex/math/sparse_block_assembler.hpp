@@ -5,6 +5,10 @@
 // column pattern and, for each block, the positions of its entries in the value array.
 // Evaluation phase: set_zero() then add(id, block, scale) writes straight into the
 // value array: no search, no allocation, cost linear in the number of entries.
+// Product mode (begin_product(x, y) ... end_product()): add() stores nothing and adds
+// block * x[cols] into y[rows] instead, so y gains (the sum of the blocks) * x without the
+// matrix being formed: an implicit integrator's M(q) a when M(q) changes with the state
+// (issue 21). The same parallel rule holds: blocks added concurrently must not share rows.
 #pragma once
 
 #include <span>
@@ -38,6 +42,13 @@ class SparseBlockAssembler {
   /// mirrored position (the block must have been declared with rows/cols swapped).
   void add_transposed(BlockId mirrored_id, const Eigen::Ref<const MatX>& block, double scale = 1.0);
 
+  /// Product mode: until end_product(), add(id, block, s) does y[rows] += s block x[cols]
+  /// and add_transposed likewise with the block transposed; the matrix is left as it was.
+  /// x has cols() entries, y rows(); both must outlive the product.
+  void begin_product(const VecX& x, VecX& y);
+  void end_product();
+  bool in_product() const { return product_x_ != nullptr; }
+
   const SpMat& matrix() const { return matrix_; }
   SpMat& matrix() { return matrix_; }
 
@@ -60,6 +71,8 @@ class SparseBlockAssembler {
   std::vector<Index> col_index_;  // per block: its column list
   std::vector<int> value_pos_;    // per block entry (column-major): position in valuePtr
   SpMat matrix_;
+  const VecX* product_x_ = nullptr;  // product mode (begin_product)
+  VecX* product_y_ = nullptr;
 };
 
 }  // namespace seaflex::math

@@ -3,6 +3,7 @@
 // output channels. New body kinds (rigid body, ANCF plate) derive from this class.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -62,6 +63,12 @@ class Body {
   /// Largest fraction (<= 1) of a Newton update dq (global vector) that this body accepts
   /// in one iteration; 1 unless the body's coordinates have a limited safe range.
   virtual double step_scale(const State& /*state*/, const VecX& /*dq*/) const { return 1.0; }
+
+  /// The shortest length over which this body's coordinates are differenced into strains
+  /// (m): a flexible body's shortest element side; +inf for a rigid body. An error dq in the
+  /// positions is a strain error of about dq / length_scale() (the integrators' position
+  /// tolerances are relative to it).
+  virtual double length_scale() const { return std::numeric_limits<double>::infinity(); }
 
   /// Constraints that belong to the body's parametrization (the Euler-parameter
   /// normalization of a rigid body); the System adds them with the body.

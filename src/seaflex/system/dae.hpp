@@ -4,6 +4,7 @@
 // it in a test.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct DaeRequest {
   /// when not null, adds kq * d(M(q) a)/dq for this a to the top-left block (bodies and
   /// loads whose mass matrix depends on q: rigid bodies, turning added mass)
   const VecX* acceleration = nullptr;
+  /// when not null (with matrix; only if Dae::supports_product()), the top-left block is not
+  /// stored: DaeEval::product gets (km M - kq dQ/dq - kv dQ/dv) x in its first n entries
+  /// instead, from the same element blocks, and the constraint blocks are left out (e.g.
+  /// M(q) a with scales {1, 0, 0} without forming M(q))
+  const VecX* product_with = nullptr;
 };
 
 /// Results and workspace of evaluations; allocated once by Dae::make_eval().
@@ -38,6 +44,8 @@ struct DaeEval {
   VecX Cdot;
   VecX gamma;
   VecX CqT_lambda;  ///< C_q^T lambda, when DaeRequest::reaction_forces
+  VecX product;     ///< n + m: the top-left block times DaeRequest::product_with, first n
+  VecX product_x;   ///< n + m: workspace, product_with and zeros
   math::SparseBlockAssembler kkt;
   std::vector<ConstraintEval> constraint_buffers;
   std::vector<MatX> hessian_buffers;
@@ -56,12 +64,17 @@ class Dae {
   /// True when M does not depend on the state (constraints may be nonlinear); false is
   /// always safe.
   virtual bool constant_mass() const { return false; }
+  /// True when evaluate() honours DaeRequest::product_with.
+  virtual bool supports_product() const { return false; }
   /// Names for messages: "beam.n3.r'.z", "support beam.n0: x".
   virtual std::string coordinate_name(Index i) const = 0;
   virtual std::string constraint_name(Index row) const = 0;
   /// Largest fraction (<= 1) of a Newton update dq that keeps every body within its safe
   /// step (a rigid body's attitude turns by at most about 30 degrees); 1 by default.
   virtual double step_scale(const State& /*state*/, const VecX& /*dq*/) const { return 1.0; }
+  /// The shortest length over which coordinates are differenced into strains (m), the
+  /// smallest Body::length_scale(); +inf when no body has one.
+  virtual double length_scale() const { return std::numeric_limits<double>::infinity(); }
   /// Forces with memory: start(state) once before a time simulation, accept_step(state)
   /// after every accepted step (DESIGN: memory enters only through z or accept_step).
   virtual void start(const State& /*state*/) {}

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace seaflex {
@@ -79,6 +80,8 @@ DaeEval System::make_eval() const {
   e.Cdot = VecX::Zero(m_);
   e.gamma = VecX::Zero(m_);
   e.CqT_lambda = VecX::Zero(n_);
+  e.product = VecX::Zero(n_ + m_);
+  e.product_x = VecX::Zero(n_ + m_);
   e.kkt = pattern_;
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Index rows = constraints_[k]->num_rows();
@@ -98,11 +101,24 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
     out.Q.setZero();
     target.forces = &out.Q;
   }
-  if (request.matrix) {
+  const bool product = request.matrix && request.product_with != nullptr;
+  if (product) {
+    out.product_x.head(n_) = *request.product_with;
+    out.product.setZero();
+    target.matrix = &out.kkt;
+  } else if (request.matrix) {
     out.kkt.set_zero();
     target.matrix = &out.kkt;
   }
   if (target.forces || (target.matrix && request.scales.any())) {
+    // product mode ends however the assembly ends (an element may throw)
+    struct ProductMode {
+      math::SparseBlockAssembler* kkt;
+      ~ProductMode() {
+        if (kkt) kkt->end_product();
+      }
+    } mode{product ? &out.kkt : nullptr};
+    if (product) out.kkt.begin_product(out.product_x, out.product);
     for (const auto& b : bodies_) b->assemble(state, target);
     for (const auto& f : forces_) f->assemble(state, request.load_factor, target);
   }
@@ -128,7 +144,7 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
       for (std::size_t i = 0; i < dofs.size(); ++i)
         for (Index r = 0; r < c.num_rows(); ++r)
           out.CqT_lambda[dofs[i]] += ce.Cq(r, i) * state.lambda[r0 + r];
-    if (request.matrix) {
+    if (request.matrix && !product) {
       out.kkt.add(cq_block_[k], ce.Cq);
       out.kkt.add_transposed(cqt_block_[k], ce.Cq);
       if (request.multiplier_hessian && request.scales.kq != 0.0 && hess_block_[k] >= 0) {
@@ -180,6 +196,12 @@ double System::step_scale(const State& state, const VecX& dq) const {
   double scale = 1.0;
   for (const auto& b : bodies_) scale = std::min(scale, b->step_scale(state, dq));
   return scale;
+}
+
+double System::length_scale() const {
+  double length = std::numeric_limits<double>::infinity();
+  for (const auto& b : bodies_) length = std::min(length, b->length_scale());
+  return length;
 }
 
 // the constraint that owns a row: the last one that starts at or before it (binary search)

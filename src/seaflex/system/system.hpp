@@ -58,6 +58,8 @@ class System : public Dae {
   std::string coordinate_name(Index i) const override;
   std::string constraint_name(Index row) const override;
   double step_scale(const State& state, const VecX& dq) const override;
+  double length_scale() const override;
+  bool supports_product() const override { return true; }
   void start(const State& state) override;
   void accept_step(const State& state) override;
   /// The constraint that owns a row of the multiplier vector; nullptr when out of range.
