@@ -37,6 +37,7 @@ struct Tensioner {
   double T0 = 0.0, k = 0.0, c = 0.0;
   std::optional<std::pair<double, double>> limits;
   double k_stop = 0.0;
+  double reference_length = 0.0;  // 0: not given (the distance at the start, kL)
 };
 
 // the body hangs kL below the fixed point at the start: L_ref = kL, stroke 0
@@ -45,6 +46,8 @@ std::string model_text(const Tensioner& t, const std::string& dynamics) {
   if (t.limits)
     stops = fmt::format("\n    stroke_limits: [{}, {}]\n    stop_stiffness: {}", t.limits->first,
                         t.limits->second, t.k_stop);
+  if (t.reference_length > 0.0)
+    stops += fmt::format("\n    reference_length: {}", t.reference_length);
   return fmt::format(R"(
 environment: {{gravity: {g}}}
 bodies:
@@ -134,6 +137,9 @@ TEST(ConstantTensioner, StaticsStrokeWithAndWithoutTheStop) {
       {"on the upper stop",
        {T0, k, 0.0, std::make_pair(-0.05, s_max), k_stop},
        s_max + (kM * kG - T0 - k * s_max) / (k + k_stop)},
+      {"reference length 9.9 m given, on the upper stop",
+       {T0, k, 0.0, std::make_pair(-0.05, s_max), k_stop, kL - 0.1},
+       s_max + (kM * kG - T0 - k * s_max) / (k + k_stop)},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.label);
@@ -148,8 +154,10 @@ TEST(ConstantTensioner, StaticsStrokeWithAndWithoutTheStop) {
       if (ch.name == "mass.z") z = ch.value(s);
     }
     EXPECT_NEAR(stroke, c.expected, 2e-8);
-    EXPECT_NEAR(-z - kL, c.expected, 2e-8);  // the body dropped by the stroke
-    EXPECT_NEAR(length, kL + c.expected, 2e-8);
+    // the body hangs the reference length plus the stroke below the fixed point
+    const double L_ref = c.t.reference_length > 0.0 ? c.t.reference_length : kL;
+    EXPECT_NEAR(-z, L_ref + c.expected, 2e-8);
+    EXPECT_NEAR(length, L_ref + c.expected, 2e-8);
     EXPECT_NEAR(tension, kM * kG, 1e-8 * kM * kG);
     std::printf("statics, %s: stroke %.9f m (closed form %.9f m), %d iterations\n", c.label, stroke,
                 c.expected, rep.iterations);
