@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -24,6 +25,7 @@
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/elements/ancf_beam.hpp"
 #include "seaflex/elements/rigid_body.hpp"
+#include "seaflex/forces/constant_tensioner.hpp"
 #include "seaflex/forces/pneumatic_cylinder.hpp"
 #include "seaflex/forces/point_load.hpp"
 #include "seaflex/forces/rope.hpp"
@@ -1192,6 +1194,59 @@ TEST(PneumaticCylinder, GasLawStribeckFrictionAndTangents) {
     const double fd = (fr.force(v + h, 1e7) - fr.force(v - h, 1e7)) / (2 * h);
     EXPECT_NEAR(fr.dforce_dv(v, 1e7), fd, 1e-5 * std::abs(fd) + 1e-3) << v;
   }
+}
+
+// constant-tension tensioner, T = T0 + k s + c L' + the stops: inside the stroke (damped),
+// beyond the upper and the lower stop, and a pure constant tension with unlimited stroke;
+// rigid-rigid, rigid-beam, beam-ground and beam-beam. The strokes lie 0.1 m or more from
+// the kinks at s_min and s_max, where the central differences (h = 1e-6) see one branch
+// only. The force at rest is minus the gradient of V(s), the tangents match differences
+// (the damping's q-derivative included), and the tension and V are the law by hand (1e-12:
+// a few round-offs of the terms).
+TEST(ConstantTensioner, ForceIsMinusEnergyGradientAndTangentsMatchDifferences) {
+  World w(24);
+  const State& s = w.s;
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Case {
+    std::string label;
+    MarkerFactory a, b;
+    double stroke, k, c, s_min, s_max;
+  };
+  const std::vector<Case> cases = {
+      {"inside the stroke, damped, rigid-rigid", &World::R1, &World::R2, 0.3, 2e5, 3e3, -1.0, 1.0},
+      {"beyond s_max, rigid-beam(element)", &World::R1, &World::B1e, 0.7, 1e5, 1e3, -0.4, 0.5},
+      {"below s_min, beam(node)-ground", &World::B1n, &World::G, -0.6, 1e5, 2e3, -0.4, 0.5},
+      {"constant tension, unlimited, beam-beam", &World::B1e, &World::B2n, 0.2, 0.0, 0.0, -inf,
+       inf},
+  };
+  const double T0 = 4e5, k_stop = 5e7;
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.label);
+    auto a = (w.*c.a)(), b = (w.*c.b)();
+    const double L = distance(*a, *b, s);
+    TensionerLaw law{T0, c.k, c.c, c.s_min, c.s_max, std::isfinite(c.s_max) ? k_stop : 0.0};
+    ConstantTensioner ten("top", std::move(a), std::move(b), law);
+    ten.set_reference_length(L - c.stroke);
+    check_force(ten, w, s, s);
+    EXPECT_NEAR(ten.stroke(s), c.stroke, 1e-12 * L);
+    const double over = std::max(c.stroke - c.s_max, 0.0),
+                 under = std::max(c.s_min - c.stroke, 0.0);
+    const double restoring = T0 + c.k * c.stroke + k_stop * over - k_stop * under;
+    const StateFn length = [&](const State& t) -> VecX { return VecX::Constant(1, ten.length(t)); };
+    const double Ld = fd_along_v(s, length)[0];
+    EXPECT_NEAR(ten.tension(s), restoring + c.c * Ld, 1e-12 * T0 + 1e-7 * std::abs(c.c * Ld));
+    const double V = T0 * c.stroke + 0.5 * c.k * c.stroke * c.stroke +
+                     0.5 * k_stop * (over * over + under * under);
+    EXPECT_NEAR(ten.potential_energy(s), V, 1e-12 * (std::abs(V) + T0));
+  }
+  // the law's slope on both sides of each kink, and its energy continuous through them
+  TensionerLaw law{T0, 1e5, 0.0, -0.4, 0.5, k_stop};
+  EXPECT_EQ(law.slope(0.5), 1e5);
+  EXPECT_EQ(law.slope(0.5 + 1e-9), 1e5 + k_stop);
+  EXPECT_EQ(law.slope(-0.4), 1e5);
+  EXPECT_EQ(law.slope(-0.4 - 1e-9), 1e5 + k_stop);
+  EXPECT_NEAR(law.energy(0.5 + 1e-9), law.energy(0.5), 1e-9 * (T0 + 1e5));
+  EXPECT_NEAR(law.restoring(0.5 + 1e-9), law.restoring(0.5), 1e-9 * (1e5 + k_stop) + 1e-9);
 }
 
 // V = 1/2 k theta^2 between z axes: at exactly aligned axes (theta = 0), in the series

@@ -75,6 +75,10 @@ const std::string kCylinder =
     "connections:\n  - {name: c, type: pneumatic_cylinder, from: face, to: {body: ground, "
     "position: [10, 0, 6]}, piston_area: 0.1, gas_pressure: 1e7, gas_volume: 2, friction: "
     "{coulomb: 1e3, static: 2e3}}\n";
+// a tensioner from a point above the box to the box
+const std::string kTensioner =
+    "connections:\n  - {name: t, type: tensioner, from: {body: ground, position: [10, 0, 6]}, "
+    "to: face, tension: 1e4, stroke_limits: [-1, 1], stop_stiffness: 1e6}\n";
 
 // planar four-bar of parallel revolute joints (hinge axes along y): 3 bodies, 6 x 3 = 18
 // degrees of freedom, 4 x 5 = 20 rows, one degree of freedom left: 3 rows are redundant
@@ -554,6 +558,26 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"cylinder without gas volume", kRigid + replace(kCylinder, "gas_volume: 2,", ""),
                 "m.yaml:24:5: connections[0].gas_volume: required key is missing (a number "
                 "in m^3)"},
+        BadCase{"tensioner stop stiffness without stroke limits",
+                kRigid + replace(kTensioner, "stroke_limits: [-1, 1], ", ""),
+                "m.yaml:24:116: connections[0].stop_stiffness: applies only with stroke_limits: "
+                "without them the stroke is unlimited"},
+        BadCase{"tensioner stroke limits of three numbers",
+                kRigid + replace(kTensioner, "[-1, 1]", "[-1, 0, 1]"),
+                "m.yaml:24:115: connections[0].stroke_limits: expected a list of two numbers "
+                "[s_min, s_max] in m with s_min < 0 < s_max, got 3 entries"},
+        BadCase{"tensioner stroke limit at zero", kRigid + replace(kTensioner, "[-1, 1]", "[0, 1]"),
+                "m.yaml:24:115: connections[0].stroke_limits: expected [s_min, s_max] with s_min < "
+                "0 < s_max (the stroke counts from the reference length), got [0, 1]"},
+        BadCase{"tensioner stroke limit not a number",
+                kRigid + replace(kTensioner, "[-1, 1]", "[-1, up]"),
+                "m.yaml:24:120: connections[0].stroke_limits[1]: expected a number in m, got 'up'"},
+        BadCase{"tensioner negative damping",
+                kRigid + replace(kTensioner, "tension: 1e4,", "tension: 1e4, damping: -5,"),
+                "m.yaml:24:109: connections[0].damping: must be at least 0 N s/m, got -5"},
+        BadCase{"tensioner zero reference length",
+                kRigid + replace(kTensioner, "tension: 1e4,", "tension: 1e4, reference_length: 0,"),
+                "m.yaml:24:118: connections[0].reference_length: must be greater than 0 m, got 0"},
         BadCase{"load at a ground marker",
                 kRigid + "loads:\n  - {type: point_force, at: {body: ground, position: [0, 0, 0]}, "
                          "force: [0, 0, 1]}\n",

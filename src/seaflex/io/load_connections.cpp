@@ -1,12 +1,13 @@
 // connections: force elements between markers: spring (a spring-damper between two
-// points), rope (a tension-only wire through a path of points, with reeving parts), and
+// points), rope (a tension-only wire through a path of points, with reeving parts),
 // pneumatic_cylinder (the gas spring with Stribeck friction of a riser tensioner, thesis
-// eq. 184-185).
+// eq. 184-185), and tensioner (a constant tension with stroke limits, constant_tensioner.hpp).
 #include <fmt/format.h>
 
 #include <limits>
 #include <set>
 
+#include "seaflex/forces/constant_tensioner.hpp"
 #include "seaflex/forces/pneumatic_cylinder.hpp"
 #include "seaflex/forces/rope.hpp"
 #include "seaflex/forces/spring_damper.hpp"
@@ -271,6 +272,89 @@ void load_cylinder(MapReader& r, const YAML::Node& node, const std::string& path
   });
 }
 
+// stroke_limits: [s_min, s_max] in m with s_min < 0 < s_max
+std::optional<std::pair<double, double>> read_stroke_limits(MapReader& r) {
+  const YAML::Node n = r.get("stroke_limits");
+  const std::string key = r.key_path("stroke_limits");
+  if (!n.IsSequence() || n.size() != 2) {
+    r.error("stroke_limits",
+            fmt::format("expected a list of two numbers [s_min, s_max] in m with s_min < 0 < "
+                        "s_max, got {}",
+                        n.IsSequence() ? fmt::format("{} entries", n.size()) : describe(n)));
+    return std::nullopt;
+  }
+  const auto lo = read_number(r.diagnostics(), n[0], key + "[0]", NumberRule::any("m"));
+  const auto hi = read_number(r.diagnostics(), n[1], key + "[1]", NumberRule::any("m"));
+  if (!lo || !hi) return std::nullopt;
+  if (!(*lo < 0.0 && *hi > 0.0)) {
+    r.error("stroke_limits",
+            fmt::format("expected [s_min, s_max] with s_min < 0 < s_max (the stroke counts from "
+                        "the reference length), got [{}, {}]",
+                        *lo, *hi));
+    return std::nullopt;
+  }
+  return std::make_pair(*lo, *hi);
+}
+
+void load_tensioner(MapReader& r, const YAML::Node& node, const std::string& path,
+                    std::set<std::string>& names, LoadContext& ctx) {
+  const auto entry = read_pair(r, names, "connection");
+  TensionerLaw law;
+  const auto t0 = r.number("tension", Need::kRequired, NumberRule::positive("N"));
+  auto optional = [&](const char* key, const NumberRule& rule) {
+    return r.has(key) ? r.number(key, Need::kRequired, rule) : std::optional<double>(0.0);
+  };
+  const auto k = optional("stiffness", NumberRule::nonnegative("N/m"));
+  const auto c = optional("damping", NumberRule::nonnegative("N s/m"));
+  std::optional<double> reference = 0.0;
+  if (r.has("reference_length"))
+    reference = r.number("reference_length", Need::kRequired, NumberRule::positive("m"));
+  bool stops_ok = true;
+  const bool limited = r.has("stroke_limits");
+  if (limited) {
+    const auto limits = read_stroke_limits(r);
+    std::optional<double> k_stop;
+    if (r.has("stop_stiffness"))
+      k_stop = r.number("stop_stiffness", Need::kRequired, NumberRule::positive("N/m"));
+    else
+      r.error("stop_stiffness",
+              "required key is missing with stroke_limits (a number in N/m > 0: the stiffness "
+              "of the end stops)");
+    stops_ok = limits && k_stop;
+    if (stops_ok) {
+      law.stroke_min = limits->first;
+      law.stroke_max = limits->second;
+      law.stop_stiffness = *k_stop;
+    }
+  } else if (r.has("stop_stiffness")) {
+    r.error("stop_stiffness",
+            "applies only with stroke_limits: without them the stroke is unlimited");
+    stops_ok = false;
+  }
+  auto [from, to] = read_markers(r, entry, ctx);
+  r.finish();
+  if (!entry.name || !t0 || !k || !c || !reference || !stops_ok || !from || !to) return;
+  if (!check_ends(r, *entry.name, *from, *to)) return;
+  law.tension = *t0;
+  law.stiffness = *k;
+  law.damping = *c;
+  auto tensioner =
+      std::make_unique<ConstantTensioner>(*entry.name, std::move(from), std::move(to), law);
+  ConstantTensioner* tp = tensioner.get();
+  ctx.connection_origin[*entry.name] = {node.Mark(), path};
+  ctx.system.add_force(std::move(tensioner));
+  const double given = *reference;  // 0: the distance at the start
+  ctx.at_start.push_back([tp, given, mark = node.Mark(), path, &ctx](const State& s0) {
+    const double L = tp->length(s0);
+    if (!(L > 0.0))
+      ctx.diag.error(mark, path,
+                     fmt::format("the end points of tensioner '{}' coincide at the start, so the "
+                                 "direction of its force is undefined; place its ends apart",
+                                 tp->name()));
+    tp->set_reference_length(given > 0.0 ? given : L);
+  });
+}
+
 }  // namespace
 
 void load_connections(const YAML::Node& node, LoadContext& ctx) {
@@ -284,7 +368,8 @@ void load_connections(const YAML::Node& node, LoadContext& ctx) {
     const std::string path = fmt::format("connections[{}]", i);
     MapReader r(ctx.diag, node[i], path);
     if (!r.valid()) continue;
-    const auto type = r.choice("type", Need::kRequired, {"spring", "rope", "pneumatic_cylinder"});
+    const auto type =
+        r.choice("type", Need::kRequired, {"spring", "rope", "pneumatic_cylinder", "tensioner"});
     if (!type) {
       read_entry_name(r, names, "connection");  // the name is taken; other keys are not judged
       continue;
@@ -292,6 +377,7 @@ void load_connections(const YAML::Node& node, LoadContext& ctx) {
     if (*type == "spring") load_spring(r, node[i], path, names, ctx);
     if (*type == "rope") load_rope(r, node[i], path, names, ctx);
     if (*type == "pneumatic_cylinder") load_cylinder(r, node[i], path, names, ctx);
+    if (*type == "tensioner") load_tensioner(r, node[i], path, names, ctx);
   }
 }
 
