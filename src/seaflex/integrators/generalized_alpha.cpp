@@ -267,6 +267,24 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
       if (it.row() < n_) out[it.row()] += it.value() * a[j];
 }
 
+void GeneralizedAlpha::project_predictor(const Dae& dae, const State& state, double h,
+                                         double a_per_v) {
+  // the predicted velocities onto C_q v + C_t = 0 and then the positions onto C = 0, both
+  // along R = C_q(q_n)^T (the projection's own directions): dv = R eta with
+  // C_q R eta = -Cdot, made through the accelerations (dv/da = gamma'/beta'), then
+  // dq = R eta with C_q R eta = -C kept in the projection's correction
+  DaeRequest req;
+  req.forces = false;
+  update_iterate(state, h);
+  instrumented::evaluate(dae, trial_, req, eval_, stats_);
+  eta_ = projection_solver_.solve(-eval_.Cdot);
+  a_.noalias() += a_per_v * (constraint_jacobian_.transpose() * eta_);
+  update_iterate(state, h);
+  instrumented::evaluate(dae, trial_, req, eval_, stats_);
+  eta_ = projection_solver_.solve(-eval_.C);
+  corr_.noalias() = constraint_jacobian_.transpose() * eta_;
+}
+
 void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
   // C_q(q_n) alone: no forces, no mass (the bodies assemble nothing with zero scales)
   DaeRequest req;
@@ -317,6 +335,13 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   if (index2 && !projection_ready_) {
     try {
       prepare_projection(dae, state);
+    } catch (const SolverError& e) {
+      return fail(e.what());
+    }
+  }
+  if (index2) {
+    try {
+      project_predictor(dae, state, h, bp / gp);
     } catch (const SolverError& e) {
       return fail(e.what());
     }

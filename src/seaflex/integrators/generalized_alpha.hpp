@@ -81,6 +81,13 @@
 //   a_{n+1} ~ a_n + (h / h_{n-1}) (a_n - a_{n-1})   (and the same for lambda),
 // whose error is O(h^2) against O(h) for the last step's values; an imposed vessel motion
 // changes the multipliers of a heavy hull by far more per step than anything else.
+// With the index-2 form the predicted velocities are then projected onto C_q v + C_t = 0
+// and the positions onto C = 0 along R (two evaluations of the constraints alone, two
+// solves with the projection's C_q C_q^T): otherwise the first update's projection moves
+// the constrained points by Cdot / gamma' after the forces were evaluated, and the second
+// update spends itself on the forces that move brings (on the storm riser's top, 1e4 times
+// the tolerance: 3.24 -> 3.02 iterations and 772 -> 312 factorizations in 3000 steps). The
+// step's solution is unchanged: the same equations, with R eta still in the range of R.
 #pragma once
 
 #include <limits>
@@ -149,6 +156,9 @@ class GeneralizedAlpha : public Integrator {
   void mass_times(const Dae& dae, const State& state, const VecX& a, bool in_eval, VecX& out);
   bool refactor(const Dae& dae, const State& trial, double h);
   // C_q at the step's start and the factorization of C_q C_q^T (index 2)
+  /// Index 2: the predictor's velocities and positions projected onto the constraints
+  /// (a_per_v = beta'/gamma', the acceleration change per velocity change).
+  void project_predictor(const Dae& dae, const State& state, double h, double a_per_v);
   void prepare_projection(const Dae& dae, const State& state);
 
   GeneralizedAlphaSettings s_;
