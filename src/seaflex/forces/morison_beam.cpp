@@ -60,6 +60,10 @@ void MorisonBeam::declare_blocks(math::SparseBlockAssembler& matrix) {
 
 std::pair<double, double> MorisonBeam::wet_interval(const State& state, int k) const {
   const Vec12 e = beam_.element_coordinates(state.q, k);
+  // both ends below the deepest trough the sea can have: wholly wet, as hydro::wet_interval
+  // finds from the two ends, without asking the sea for the elevation (the riser's deep part)
+  const double deepest = -ocean_->waves().elevation_bound();
+  if (e[2] < deepest && e[8] < deepest) return {0.0, 1.0};
   const double l = beam_.element_length(k);
   auto above = [&](double xi) {
     const Vec3 r = ancf_cable::as_nodes(e) * ancf_cable::shape(xi, l);  // thesis eq. (3)

@@ -29,6 +29,7 @@ WaveField::WaveField(double depth, double g, double rho, std::vector<WaveCompone
   for (const auto& c : components_) {
     cos_dir_.push_back(std::cos(c.direction));
     sin_dir_.push_back(std::sin(c.direction));
+    amplitude_sum_ += std::abs(c.amplitude);
   }
 }
 

@@ -74,6 +74,13 @@ class WaveField {
   /// Whether Wheeler stretching is applied.
   bool wheeler_stretching() const { return wheeler_; }
 
+  /// A bound on |elevation(x, y, t)| everywhere, with the exact sum or the grid (m):
+  /// 1.5625 sum |a_i|. The exact sum is at most sum |a_i| (the ramp is in [0, 1]); the grid's
+  /// cubic Lagrange interpolation in s and in t multiplies that by at most its Lebesgue
+  /// constant on the middle interval, 1.25 per direction (weights -1/16, 9/16, 9/16, -1/16
+  /// at the midpoint). A point below -elevation_bound() is under water at every time.
+  double elevation_bound() const { return 1.5625 * amplitude_sum_; }
+
   /// Evaluates elevation() and kinematics() by interpolation in `grid` (wave_grid.hpp; built
   /// from a copy of this field without a grid) instead of the exact sum; nullptr: exact.
   void set_grid(std::shared_ptr<const WaveGrid> grid) { grid_ = std::move(grid); }
@@ -93,6 +100,7 @@ class WaveField {
   Ramp ramp_;
   bool wheeler_;
   bool deep_;
+  double amplitude_sum_ = 0.0;  // sum |a_i| (m)
   std::shared_ptr<const WaveGrid> grid_;
 };
 
