@@ -238,35 +238,51 @@ hydrodynamics:
 // element blocks, without the matrix, equals the assembled block times x; the forces of
 // the same pass are those of an ordinary evaluation. A barge (rigid body, hydrostatics,
 // Morison riser, joints, spring) in a state off equilibrium; round-off 1e-12 relative.
+// Also a riser through the surface with contents and axial added mass (the beam's and
+// the Morison load's own product paths: M = m (x) I3, the added mass point by point).
 TEST(SystemJacobians, ProductModeEqualsTheAssembledBlockTimesAVector) {
-  const io::Model model =
-      io::load_model_file(std::string(SEAFLEX_SOURCE_DIR) + "/examples/barge_riser.yaml");
-  const System& sys = *model.system;
-  ASSERT_TRUE(sys.supports_product());
-  State s = sys.initial_state();
-  const Index n = sys.num_coordinates();
-  s.q += 1e-3 * VecX::Random(n);
-  s.v = 0.1 * VecX::Random(n);
-  const VecX x = VecX::Random(n);
-  for (const MatrixScales scales : {MatrixScales{1.0, 0.0, 0.0}, MatrixScales{1.0, 0.3, 0.02}}) {
-    DaeRequest req;
-    req.matrix = true;
-    req.scales = scales;
-    DaeEval full = sys.make_eval(), prod = sys.make_eval();
-    sys.evaluate(s, req, full);
-    req.product_with = &x;
-    sys.evaluate(s, req, prod);
-    const SpMat block = full.kkt.matrix().topLeftCorner(n, n);
-    const VecX ref = block * x;
-    EXPECT_GT(ref.norm(), 1.0);
-    EXPECT_LT((prod.product.head(n) - ref).lpNorm<Eigen::Infinity>(),
-              1e-12 * ref.lpNorm<Eigen::Infinity>() + 1e-12 * MatX(block).cwiseAbs().maxCoeff());
-    EXPECT_EQ((prod.Q - full.Q).lpNorm<Eigen::Infinity>(), 0.0);
-    EXPECT_EQ((prod.C - full.C).lpNorm<Eigen::Infinity>(), 0.0);
-    // an ordinary evaluation with the same workspace after a product one assembles again
-    req.product_with = nullptr;
-    sys.evaluate(s, req, prod);
-    EXPECT_EQ((MatX(prod.kkt.matrix()) - MatX(full.kkt.matrix())).norm(), 0.0);
+  for (const bool riser_only : {false, true}) {
+    const io::Model model =
+        riser_only
+            ? io::load_model_text(R"(
+environment: {gravity: 9.81, water: {density: 1025, depth: 100}}
+bodies:
+  riser: {type: ancf_beam, start: [0, 0, -100], end: [20, 5, 10], elements: 7,
+          outer_diameter: 0.5, inner_diameter: 0.4, youngs_modulus: 210e9, density: 7850}
+hydrodynamics:
+  riser: {cd: 1.0, cm: 2.0, ca_axial: 0.4, contents_density: 1100}
+supports:
+  - {body: riser, node: start, type: pinned}
+)",
+                                  "riser.yaml")
+            : io::load_model_file(std::string(SEAFLEX_SOURCE_DIR) + "/examples/barge_riser.yaml");
+    const System& sys = *model.system;
+    ASSERT_TRUE(sys.supports_product());
+    State s = sys.initial_state();
+    const Index n = sys.num_coordinates();
+    s.q += 1e-3 * VecX::Random(n);
+    s.v = 0.1 * VecX::Random(n);
+    const VecX x = VecX::Random(n);
+    for (const MatrixScales scales : {MatrixScales{1.0, 0.0, 0.0}, MatrixScales{1.0, 0.3, 0.02}}) {
+      DaeRequest req;
+      req.matrix = true;
+      req.scales = scales;
+      DaeEval full = sys.make_eval(), prod = sys.make_eval();
+      sys.evaluate(s, req, full);
+      req.product_with = &x;
+      sys.evaluate(s, req, prod);
+      const SpMat block = full.kkt.matrix().topLeftCorner(n, n);
+      const VecX ref = block * x;
+      EXPECT_GT(ref.norm(), 1.0);
+      EXPECT_LT((prod.product.head(n) - ref).lpNorm<Eigen::Infinity>(),
+                1e-12 * ref.lpNorm<Eigen::Infinity>() + 1e-12 * MatX(block).cwiseAbs().maxCoeff());
+      EXPECT_EQ((prod.Q - full.Q).lpNorm<Eigen::Infinity>(), 0.0);
+      EXPECT_EQ((prod.C - full.C).lpNorm<Eigen::Infinity>(), 0.0);
+      // an ordinary evaluation with the same workspace after a product one assembles again
+      req.product_with = nullptr;
+      sys.evaluate(s, req, prod);
+      EXPECT_EQ((MatX(prod.kkt.matrix()) - MatX(full.kkt.matrix())).norm(), 0.0);
+    }
   }
 }
 

@@ -145,7 +145,17 @@ void AncfBeam::assemble(const State& state, AssemblyTarget& target) const {
     if (want_K) K.setZero();
     elasticity(el).add_forces(e, Q, want_K ? &K : nullptr);
     if (target.forces) target.forces->segment<12>(node_index(el)) += Q;
-    if (target.matrix) {
+    if (target.matrix && !want_K && target.matrix->in_product()) {
+      // km M x alone: M = m (x) I3 (thesis eq. 10), so M x is the 3 x 4 node matrix of x
+      // times the 4 x 4 m, without the 12 x 12 block
+      const Mat12& M = masses_[kernel_of_[el]];
+      Eigen::Matrix4d m4;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) m4(i, j) = M(3 * i, 3 * j);
+      const Vec12 x = target.matrix->product_x().segment<12>(node_index(el));
+      Eigen::Map<ancf_cable::Mat34>(target.matrix->product_y().data() + node_index(el)) +=
+          k.km * (ancf_cable::as_nodes(x) * m4.transpose());
+    } else if (target.matrix) {
       // km M + kq K, K = -dQ/de (no velocity dependence: kv contributes nothing)
       Mat12 H = k.km * masses_[kernel_of_[el]];
       if (want_K) H += k.kq * K;

@@ -125,19 +125,29 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
     const double ca_mass = ocean_->rho() * c.ca * area;
     const double ca_axial_mass = ocean_->rho() * c.ca_axial * area;
     const bool added_mass = ca_mass != 0.0 || ca_axial_mass != 0.0;
+    // product mode with the mass alone (M(q) a for generalized-alpha): the added mass and the
+    // contents' mass times the vector, point by point, without the 12 x 12 block
+    const bool product = want_matrix && target.matrix->in_product() && s.kq == 0.0 && s.kv == 0.0;
+    Vec12 y = Vec12::Zero();
+    Vec3 x_at = Vec3::Zero();
     Mat12 K;
     const double l = beam_.element_length(k);
     const Vec12 e = beam_.element_coordinates(state.q, k);
     const Vec12 ed = state.v.segment<12>(beam_.node_index(k));
     const auto E = ancf_cable::as_nodes(e);
     const auto Ed = ancf_cable::as_nodes(ed);
-    if (want_matrix) K.setZero();
+    const Vec12 x = product ? Vec12(target.matrix->product_x().segment<12>(beam_.node_index(k)))
+                            : Vec12::Zero();
+    if (want_matrix && !product) K.setZero();
     // contents: weight and mass over the whole element
     if (m_int > 0.0) {
       if (target.forces)
         target.forces->segment<12>(beam_.node_index(k)) +=
             ancf_cable::uniform_load(Vec3(0, 0, -load_factor * m_int * ocean_->g()), l);
-      if (want_matrix && s.km != 0.0) K += s.km * ancf_cable::mass_matrix(m_int, l);
+      if (product && s.km != 0.0)
+        y += s.km * ancf_cable::mass_matrix(m_int, l) * x;
+      else if (want_matrix && s.km != 0.0)
+        K += s.km * ancf_cable::mass_matrix(m_int, l);
     }
     const auto [xi0, xi1] = wet_interval(state, k);
     for (std::size_t g = 0; xi1 > xi0 && g < rule_.points.size(); ++g) {
@@ -153,6 +163,16 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         for (int i = 0; i < 4; ++i) Q.segment<3>(3 * i) += (dx * sh[i]) * pl.f;  // eq. (177)
       }
       if (!want_matrix) continue;
+      if (product) {
+        if (s.km != 0.0 && added_mass) {  // sum_i S_i^T (ca I + (ca_ax - ca) t t^T) S x dx
+          const Vec3 tt = rp.normalized();
+          x_at = ancf_cable::as_nodes(x) * sh;
+          const Vec3 f =
+              (s.km * dx) * (ca_mass * x_at + (ca_axial_mass - ca_mass) * tt.dot(x_at) * tt);
+          for (int i = 0; i < 4; ++i) y.segment<3>(3 * i) += sh[i] * f;
+        }
+        continue;
+      }
       if (s.km != 0.0 && added_mass) {
         const Vec3 tt = rp.normalized();
         add_shape_product(
@@ -191,7 +211,10 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         add_shape_product(K, sh, sh, df_dr, -s.kq * dx);
       }
     }
-    if (want_matrix) target.matrix->add(blocks_[k], K);
+    if (product)
+      target.matrix->product_y().segment<12>(beam_.node_index(k)) += y;
+    else if (want_matrix)
+      target.matrix->add(blocks_[k], K);
   });
 }
 

@@ -48,6 +48,10 @@ class SparseBlockAssembler {
   void begin_product(const VecX& x, VecX& y);
   void end_product();
   bool in_product() const { return product_x_ != nullptr; }
+  /// In product mode, the vector multiplied and the one added into: an element that knows
+  /// the structure of its block may add its product itself (same rows rule as add()).
+  const VecX& product_x() const { return *product_x_; }
+  VecX& product_y() { return *product_y_; }
 
   const SpMat& matrix() const { return matrix_; }
   SpMat& matrix() { return matrix_; }
