@@ -2,17 +2,32 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 using namespace seaflex;
+
+namespace {
+// a 5 x 5 pattern: two overlapping 3 x 3 blocks (rows 0-2, 2-4), a 1 x 2 block at (4; 0, 1)
+// and its mirror at (0, 1; 4)
+struct FourBlocks {
+  math::SparseBlockAssembler a{5, 5};
+  math::BlockId b1, b2, b3, b3t;
+  FourBlocks() {
+    const std::vector<Index> d1{0, 1, 2}, d2{2, 3, 4}, rows{4}, cols{0, 1};
+    b1 = a.declare_block(d1, d1);
+    b2 = a.declare_block(d2, d2);
+    b3 = a.declare_block(rows, cols);
+    b3t = a.declare_block(cols, rows);
+    a.finalize();
+  }
+};
+}  // namespace
 
 // two overlapping blocks assemble to the same matrix as a dense reference
 TEST(SparseBlockAssembler, OverlappingBlocksSum) {
-  math::SparseBlockAssembler a(5, 5);
-  const std::vector<Index> d1{0, 1, 2}, d2{2, 3, 4}, rows{4}, cols{0, 1};
-  const auto b1 = a.declare_block(d1, d1);
-  const auto b2 = a.declare_block(d2, d2);
-  const auto b3 = a.declare_block(rows, cols);
-  const auto b3t = a.declare_block(cols, rows);
-  a.finalize();
+  FourBlocks f;
+  auto& a = f.a;
+  const auto [b1, b2, b3, b3t] = std::tuple{f.b1, f.b2, f.b3, f.b3t};
   MatX m1 = MatX::Random(3, 3), m2 = MatX::Random(3, 3), m3 = MatX::Random(1, 2);
   a.set_zero();
   a.add(b1, m1);
@@ -43,13 +58,9 @@ TEST(SparseBlockAssembler, RejectsOutOfRangeAndLateDeclarations) {
 // product mode: the same add() calls give (sum of the blocks) x without touching the
 // matrix; checked against the assembled matrix times x (round-off: 1e-14 of |A||x|)
 TEST(SparseBlockAssembler, ProductModeEqualsTheAssembledMatrixTimesAVector) {
-  math::SparseBlockAssembler a(5, 5);
-  const std::vector<Index> d1{0, 1, 2}, d2{2, 3, 4}, rows{4}, cols{0, 1};
-  const auto b1 = a.declare_block(d1, d1);
-  const auto b2 = a.declare_block(d2, d2);
-  const auto b3 = a.declare_block(rows, cols);
-  const auto b3t = a.declare_block(cols, rows);
-  a.finalize();
+  FourBlocks f;
+  auto& a = f.a;
+  const auto [b1, b2, b3, b3t] = std::tuple{f.b1, f.b2, f.b3, f.b3t};
   const MatX m1 = MatX::Random(3, 3), m2 = MatX::Random(3, 3), m3 = MatX::Random(1, 2);
   auto add_all = [&] {
     a.add(b1, m1);

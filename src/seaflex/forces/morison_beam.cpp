@@ -129,7 +129,6 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
     // contents' mass times the vector, point by point, without the 12 x 12 block
     const bool product = want_matrix && target.matrix->in_product() && s.kq == 0.0 && s.kv == 0.0;
     Vec12 y = Vec12::Zero();
-    Vec3 x_at = Vec3::Zero();
     Mat12 K;
     const double l = beam_.element_length(k);
     const Vec12 e = beam_.element_coordinates(state.q, k);
@@ -166,7 +165,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       if (product) {
         if (s.km != 0.0 && added_mass) {  // sum_i S_i^T (ca I + (ca_ax - ca) t t^T) S x dx
           const Vec3 tt = rp.normalized();
-          x_at = ancf_cable::as_nodes(x) * sh;
+          const Vec3 x_at = ancf_cable::as_nodes(x) * sh;
           const Vec3 f =
               (s.km * dx) * (ca_mass * x_at + (ca_axial_mass - ca_mass) * tt.dot(x_at) * tt);
           for (int i = 0; i < 4; ++i) y.segment<3>(3 * i) += sh[i] * f;

@@ -94,12 +94,7 @@ void SparseBlockAssembler::end_product() {
 void SparseBlockAssembler::add(BlockId id, const Eigen::Ref<const MatX>& block, double scale) {
   const Block& blk = blocks_[id];
   if (product_x_) {
-    const Index* rows = row_index_.data() + blk.row_off;
-    const Index* cols = col_index_.data() + blk.col_off;
-    for (Index j = 0; j < blk.cols; ++j) {
-      const double xj = scale * (*product_x_)[cols[j]];
-      for (Index i = 0; i < blk.rows; ++i) (*product_y_)[rows[i]] += block(i, j) * xj;
-    }
+    add_product(blk, scale, [&](Index i, Index j) { return block(i, j); });
     return;
   }
   double* values = matrix_.valuePtr();
@@ -112,12 +107,7 @@ void SparseBlockAssembler::add_transposed(BlockId mirrored_id, const Eigen::Ref<
                                           double scale) {
   const Block& blk = blocks_[mirrored_id];  // blk.rows == block.cols()
   if (product_x_) {  // y[rows_m[i]] += block(j, i) x[cols_m[j]] with the mirrored lists
-    const Index* rows = row_index_.data() + blk.row_off;
-    const Index* cols = col_index_.data() + blk.col_off;
-    for (Index j = 0; j < blk.cols; ++j) {
-      const double xj = scale * (*product_x_)[cols[j]];
-      for (Index i = 0; i < blk.rows; ++i) (*product_y_)[rows[i]] += block(j, i) * xj;
-    }
+    add_product(blk, scale, [&](Index i, Index j) { return block(j, i); });
     return;
   }
   double* values = matrix_.valuePtr();

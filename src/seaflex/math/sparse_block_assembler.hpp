@@ -75,6 +75,17 @@ class SparseBlockAssembler {
   std::vector<Index> col_index_;  // per block: its column list
   std::vector<int> value_pos_;    // per block entry (column-major): position in valuePtr
   SpMat matrix_;
+  // product mode: y[rows[i]] += scale entry(i, j) x[cols[j]] over the block's lists
+  template <class Entry>
+  void add_product(const Block& blk, double scale, Entry entry) {
+    const Index* rows = row_index_.data() + blk.row_off;
+    const Index* cols = col_index_.data() + blk.col_off;
+    for (Index j = 0; j < blk.cols; ++j) {
+      const double xj = scale * (*product_x_)[cols[j]];
+      for (Index i = 0; i < blk.rows; ++i) (*product_y_)[rows[i]] += entry(i, j) * xj;
+    }
+  }
+
   const VecX* product_x_ = nullptr;  // product mode (begin_product)
   VecX* product_y_ = nullptr;
 };
