@@ -164,16 +164,64 @@ TEST(KktSolver, RefactorizesWithNewValues) {
   for (const LinearSolverKind kind : kKinds) {
     SCOPED_TRACE(std::string(KktSolver::to_string(kind)));
     KktSolver solver(kind);
+    solver.set_reuse_pivots(true);
     VecX x1, x2;
     ASSERT_TRUE(solver.factorize(first.A)) << solver.message();
     solver.solve(first.b, x1);
     ASSERT_TRUE(solver.factorize(second.A)) << solver.message();
     solver.solve(second.b, x2);
     EXPECT_EQ(solver.factorizations(), 2);
+    // KLU: the second reuses the first's pivot order (klu_refactor)
+    EXPECT_EQ(solver.reused_pivots(), kind == LinearSolverKind::kKlu ? 1 : 0);
     EXPECT_LT(backward_error(first.A, x1, first.b), 1e-12);
     EXPECT_LT(backward_error(second.A, x2, second.b), 1e-12);
     EXPECT_GT((x2 - x1).norm(), 1e-6 * x1.norm());
   }
+}
+
+// KLU reuses a pivot order only while it stays sound: on the same pattern, values that make
+// the old pivot tiny (1e-14 against 1 in its column) are pivoted again, and a pattern of the
+// same size and number of entries but other positions is factored afresh; both are solved to
+// round-off. Without the checks, the reused order would give an error of about 1e-2 here
+// (a pivot of 1e-14 amplifies round-off by 1e14 times the entries).
+TEST(KktSolver, KluPivotsAgainWhenTheOldOrderFails) {
+  KktSolver solver(LinearSolverKind::kKlu);
+  solver.set_reuse_pivots(true);
+  MatX A = MatX::Zero(3, 3);
+  A << 1.0, 1.0, 0.0,        //
+      1.0, 1.0 + 1e-3, 2.0,  //
+      0.0, 2.0, 1.0;
+  const VecX x_exact = (VecX(3) << 1.0, -2.0, 3.0).finished();
+  VecX x;
+  ASSERT_TRUE(solver.factorize(from_dense(A))) << solver.message();
+  solver.solve(A * x_exact, x);
+  EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-11);
+  // new values, sound pivots: reused
+  MatX B = A;
+  B(0, 0) = 1.5;
+  ASSERT_TRUE(solver.factorize(from_dense(B))) << solver.message();
+  solver.solve(B * x_exact, x);
+  EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-11);
+  EXPECT_EQ(solver.reused_pivots(), 1);
+  // the first pivot 1e-14: pivoted again
+  MatX C = A;
+  C(0, 0) = 1e-14;
+  ASSERT_TRUE(solver.factorize(from_dense(C))) << solver.message();
+  solver.solve(C * x_exact, x);
+  EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-11);
+  EXPECT_EQ(solver.reused_pivots(), 1);
+  EXPECT_EQ(solver.factorizations(), 3);
+  // same size and number of entries, other positions
+  MatX D = MatX::Zero(3, 3);
+  D << 2.0, 0.0, 1.0,  //
+      1.0, 3.0, 0.5,   //
+      0.0, 1.0, 4.0;
+  SpMat Ds = from_dense(D);
+  ASSERT_EQ(Ds.nonZeros(), from_dense(C).nonZeros());
+  ASSERT_TRUE(solver.factorize(Ds)) << solver.message();
+  solver.solve(D * x_exact, x);
+  EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-13);
+  EXPECT_EQ(solver.reused_pivots(), 1);
 }
 
 // A new pattern (here: another size) is analyzed again.

@@ -286,6 +286,40 @@ supports:
   }
 }
 
+// DaeRequest::constraint_jacobian: C_q alone (m x n) equals the KKT matrix's bottom-left
+// block, entry for entry, and the constraint values are those of an ordinary evaluation; the
+// barge and riser (joints, a support, Euler-parameter normalization) off equilibrium.
+TEST(SystemJacobians, ConstraintJacobianAloneEqualsTheKktBlock) {
+  const io::Model model =
+      io::load_model_file(std::string(SEAFLEX_SOURCE_DIR) + "/examples/barge_riser.yaml");
+  const System& sys = *model.system;
+  ASSERT_TRUE(sys.supports_constraint_jacobian());
+  State s = sys.initial_state();
+  const Index n = sys.num_coordinates(), m = sys.num_constraints();
+  ASSERT_GT(m, 0);
+  s.q += 1e-2 * VecX::Random(n);
+  s.v = 0.1 * VecX::Random(n);
+  DaeRequest req;
+  req.matrix = true;
+  req.scales = MatrixScales{1.0, 0.3, 0.02};
+  DaeEval full = sys.make_eval(), alone = sys.make_eval();
+  sys.evaluate(s, req, full);
+  DaeRequest only;
+  only.forces = false;
+  only.constraint_jacobian = true;
+  for (int pass = 0; pass < 2; ++pass) {  // twice: the second starts from the first's values
+    sys.evaluate(s, only, alone);
+    const MatX ref = MatX(full.kkt.matrix()).bottomLeftCorner(m, n);
+    const MatX cq = MatX(alone.Cq.matrix());
+    ASSERT_EQ(cq.rows(), m);
+    ASSERT_EQ(cq.cols(), n);
+    EXPECT_GT(ref.norm(), 1.0);
+    EXPECT_EQ((cq - ref).norm(), 0.0);
+    EXPECT_EQ((alone.C - full.C).norm(), 0.0);
+    EXPECT_EQ((alone.Cdot - full.Cdot).norm(), 0.0);
+  }
+}
+
 // The shortest element: the system's length scale (generalized-alpha's projection
 // tolerance); a riser of 300 m in 10 elements and a plate of 2 x 1 m in 4 x 2 cells.
 TEST(SystemJacobians, LengthScaleIsTheShortestElement) {

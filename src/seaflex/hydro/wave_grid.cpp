@@ -97,6 +97,9 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
       128.0;  // the map node, the vectors' headers
   max_columns_ =
       static_cast<std::int64_t>(std::max(64.0, std::min(spec.max_bytes / column_bytes, 1e12)));
+  max_station_phasors_ = static_cast<std::size_t>(std::clamp(
+      spec.max_bytes / 8.0 / (16.0 * static_cast<double>(std::max<std::size_t>(comps.size(), 1))),
+      1.0, 4096.0));
   // depth factors at every level (the same expressions as WaveField::airy)
   const std::size_t J = z_.size(), N = comps.size();
   fh_.assign(comps.size() * J, 0.0);
@@ -137,28 +140,55 @@ std::int64_t WaveGrid::columns_stored() const {
   return stored_;
 }
 
+const std::vector<double>& WaveGrid::station_phasors(std::int64_t m) const {
+  if (station_phasors_.size() >= max_station_phasors_ && !station_phasors_.count(m))
+    station_phasors_.clear();  // bounded memory (a line sweeping across many stations)
+  auto [it, inserted] = station_phasors_.try_emplace(m);
+  if (inserted) {
+    const auto& comps = field_.components();
+    const double s = static_cast<double>(m) * spec_.ds;
+    it->second.resize(2 * comps.size());
+    for (std::size_t i = 0; i < comps.size(); ++i) {
+      const double ks = comps[i].k * s;
+      it->second[2 * i] = std::cos(ks);
+      it->second[2 * i + 1] = std::sin(ks);
+    }
+  }
+  return it->second;
+}
+
 WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
   Slot& slot = slot_of(n);
+  const auto& comps = field_.components();
+  const std::size_t N = comps.size();
   if (slot.n != n) {
     stored_ -= static_cast<std::int64_t>(slot.columns.size());
     slot.columns.clear();
     slot.n = n;
     ++generation_;
+    // the time phasors of t_n: N sines and cosines per time sample, shared by its stations
+    const double t = static_cast<double>(n) * spec_.dt;
+    slot.phasors.resize(2 * N);
+    for (std::size_t i = 0; i < N; ++i) {
+      const double wt = comps[i].omega * t + comps[i].phase;
+      slot.phasors[2 * i] = std::cos(wt);
+      slot.phasors[2 * i + 1] = std::sin(wt);
+    }
   }
   auto [it, inserted] = slot.columns.try_emplace(m);
   Column& col = it->second;
   if (!inserted) return col;
-  // the elevation and the phasors at (s_m, t_n): N sines and cosines
-  const double s = static_cast<double>(m) * spec_.ds;
-  const double t = static_cast<double>(n) * spec_.dt;
-  const auto& comps = field_.components();
+  // the elevation and the coefficients at (s_m, t_n): theta = (w t_n + phase) - k s_m, so
+  // cos theta = cos A cos B + sin A sin B, sin theta = sin A cos B - cos A sin B with
+  // A = w t_n + phase (the slot's phasors) and B = k s_m (the station's)
+  const std::vector<double>& st = station_phasors(m);
+  const std::vector<double>& tp = slot.phasors;
   const std::size_t J = z_.size();
-  const std::size_t N = comps.size();
   col.coef.resize(5 * N);
   for (std::size_t i = 0; i < N; ++i) {
     const auto& c = comps[i];
-    const double theta = c.omega * t - c.k * s + c.phase;
-    const double ac = c.amplitude * std::cos(theta), as = c.amplitude * std::sin(theta);
+    const double cA = tp[2 * i], sA = tp[2 * i + 1], cB = st[2 * i], sB = st[2 * i + 1];
+    const double ac = c.amplitude * (cA * cB + sA * sB), as = c.amplitude * (sA * cB - cA * sB);
     col.eta += ac;
     const double w = c.omega, ww = c.omega * c.omega;
     col.coef[i] = w * ac;            // u_h

@@ -6,11 +6,13 @@
 //   s = x cos b + y sin b, z and t only. The grid holds, at stations s_m = m ds (every
 //   integer m, filled when first needed), levels z_j in [-d, 0] and times t_n = n dt, the
 //   exact sums (without the ramp) of eta(s, t) and of the Airy velocity, local acceleration
-//   and dynamic pressure at z_j. A column (s_m, t_n) costs N sines and cosines when first
-//   asked for (its elevation), and 5 N multiply-adds per level, filled by blocks of kBlock
-//   levels as points need them; each once per run. The cost per evaluation (16 columns x 4
-//   levels x 5 values) does not depend on N; the filling grows with N times the grid nodes
-//   the line visits (one new time sample per dt).
+//   and dynamic pressure at z_j. A column (s_m, t_n) costs N complex products when first
+//   asked for (its elevation: the phase w t_n - k s_m + phase is the product of a time
+//   phasor e^{i (w t_n + phase)}, N sines and cosines once per time sample, and a station
+//   phasor e^{-i k s_m}, N once per station), and 5 N multiply-adds per level, filled by
+//   blocks of kBlock levels as points need them; each once per run. The cost per
+//   evaluation (16 columns x 4 levels x 5 values) does not depend on N; the filling grows
+//   with N times the grid nodes the line visits (one new time sample per dt).
 // - Levels: z_0 = 0, z_{j+1} = z_j - (dz + dz_growth |z_j|), the last one at -d (deep
 //   water: at -21 / k_min, where e^{k_min z} < 1e-9; below it the exact sum is used): fine
 //   at the surface where the shortest components live, coarse at depth where only the long
@@ -118,7 +120,13 @@ class WaveGrid {
   struct Slot {
     std::int64_t n = INT64_MIN;
     std::unordered_map<std::int64_t, Column> columns;
+    // the time phasors of t_n: [2 i] = cos(w_i t_n + phase_i), [2 i + 1] = sin(...)
+    std::vector<double> phasors;
   };
+  // the station phasors of s_m: [2 i] = cos(k_i s_m), [2 i + 1] = sin(k_i s_m); caller holds
+  // mutex_. Kept for at most max_station_phasors_ stations (then all are dropped and made
+  // again): 4096, or fewer so that they take at most an eighth of spec.max_bytes.
+  const std::vector<double>& station_phasors(std::int64_t m) const;
   static constexpr int kSlots = 64;
 
   // the column (m, n), with its elevation and coefficients; caller holds mutex_
@@ -188,8 +196,10 @@ class WaveGrid {
   std::vector<double> fh_, fv_, fp_;
   mutable std::shared_mutex mutex_;
   mutable std::vector<Slot> slots_;
+  mutable std::unordered_map<std::int64_t, std::vector<double>> station_phasors_;
   mutable std::int64_t started_ = 0, blocks_ = 0, stored_ = 0;
   std::int64_t max_columns_ = 0;
+  std::size_t max_station_phasors_ = 4096;
   mutable std::uint64_t generation_ = 0;  // counts slot clearings (they free columns)
   std::uint64_t id_;                      // this grid, for the threads' stencil caches
 };

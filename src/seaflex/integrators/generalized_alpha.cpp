@@ -45,6 +45,9 @@ GeneralizedAlpha::GeneralizedAlpha(GeneralizedAlphaSettings settings)
     : s_(settings),
       newton_solver_(settings.linear_solver),
       initial_solver_(settings.linear_solver) {
+  // a stale Newton matrix is refactored with the pivot order of an earlier one (saved in
+  // checkpoints, so that a restart factors the same; kkt_solver.hpp)
+  newton_solver_.set_reuse_pivots(true);
   if (!(s_.alpha_m < 1.0 && s_.alpha_f < 1.0 && s_.beta > 0.0 && s_.gamma > 0.0))
     throw std::invalid_argument("generalized-alpha: need alpha_m, alpha_f < 1 and beta, gamma > 0");
   if (s_.max_iterations < 1 || !(s_.tolerance > 0.0))
@@ -142,6 +145,11 @@ bool GeneralizedAlpha::save(CheckpointWriter& out) const {
     out.put("ga.factored_at.v", factored_at_.v);
     out.put("ga.factored_at.lambda", factored_at_.lambda);
     out.put("ga.factored_a", factored_a_);
+    // the matrix whose pivot order the current factors reused (restore factors it first)
+    const std::vector<double>& source = newton_solver_.pivot_source();
+    if (!source.empty())
+      out.put("ga.pivot_source",
+              VecX(Eigen::Map<const VecX>(source.data(), static_cast<Index>(source.size()))));
   }
   return true;
 }
@@ -198,6 +206,17 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
       DaeEval mass_eval = dae.make_eval();
       dae.evaluate(factored_at_, mreq, mass_eval);
       mass_ = mass_eval.kkt.matrix().topLeftCorner(n_, n_);
+    }
+    if (in.has("ga.pivot_source")) {
+      // the saved run's factors reused the pivot order of this matrix: set the same order
+      SpMat source = eval_.kkt.matrix();
+      const VecX values = in.vector("ga.pivot_source");
+      if (values.size() != source.nonZeros())
+        throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
+      std::copy(values.data(), values.data() + values.size(), source.valuePtr());
+      if (!instrumented::factorize(newton_solver_, source, stats_))
+        throw SolverError("generalized-alpha: the restored Newton matrix is singular",
+                          factored_at_.t);
     }
     if (!instrumented::factorize(newton_solver_, eval_.kkt.matrix(), stats_))
       throw SolverError("generalized-alpha: the restored Newton matrix is singular",
@@ -289,10 +308,16 @@ void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
   // C_q(q_n) alone: no forces, no mass (the bodies assemble nothing with zero scales)
   DaeRequest req;
   req.forces = false;
-  req.matrix = true;
-  req.scales = MatrixScales{0.0, 0.0, 0.0};
-  instrumented::evaluate(dae, state, req, projection_eval_, stats_);
-  constraint_jacobian_ = projection_eval_.kkt.matrix().bottomLeftCorner(m_, n_);
+  if (dae.supports_constraint_jacobian()) {  // C_q alone, without the KKT matrix
+    req.constraint_jacobian = true;
+    instrumented::evaluate(dae, state, req, projection_eval_, stats_);
+    constraint_jacobian_ = projection_eval_.Cq.matrix();
+  } else {
+    req.matrix = true;
+    req.scales = MatrixScales{0.0, 0.0, 0.0};
+    instrumented::evaluate(dae, state, req, projection_eval_, stats_);
+    constraint_jacobian_ = projection_eval_.kkt.matrix().bottomLeftCorner(m_, n_);
+  }
   const SpMat BBt = constraint_jacobian_ * constraint_jacobian_.transpose();
   if (!projection_analyzed_) {
     projection_solver_.analyzePattern(BBt);

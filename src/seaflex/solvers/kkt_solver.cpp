@@ -5,8 +5,10 @@
 #include <Eigen/KLUSupport>
 #include <Eigen/SparseLU>
 #include <Eigen/UmfPackSupport>
+#include <algorithm>
 #include <array>
 #include <utility>
+#include <vector>
 
 namespace seaflex {
 
@@ -20,6 +22,16 @@ class KktBackend {
   virtual bool analyze(const SpMat& A, std::string& message) = 0;
   virtual bool factorize(const SpMat& A, std::string& message) = 0;
   virtual void solve(const VecX& b, VecX& x) const = 0;
+  /// Numeric factorizations that reused an earlier one's pivot order.
+  virtual int reused_pivots() const { return 0; }
+  /// Lets factorize() reuse the last pivoting factorization's pivot order (KLU only).
+  virtual void set_reuse_pivots(bool /*on*/) {}
+  /// The current factors reused the pivot order of the factorization of these values (the
+  /// matrix's entries in its stored order); empty when they were pivoted themselves.
+  virtual const std::vector<double>& pivot_source() const {
+    static const std::vector<double> none;
+    return none;
+  }
 };
 
 }  // namespace detail
@@ -61,36 +73,108 @@ std::string klu_status(const klu_common& common) {
   }
 }
 
+// KLU called directly (not through Eigen's wrapper, which frees the factors and calls
+// klu_factor every time): the first factorization of a pattern pivots (klu_factor); with
+// set_reuse_pivots(true), later ones with the same pattern reuse its pivot order
+// (klu_refactor: no depth-first search, no pivot search, no allocation). A refactorization
+// is kept only while its pivots stay sound: the crude reciprocal condition number
+// (klu_rcond, min |u_ii| / max |u_ii|) and the reciprocal pivot growth (klu_rgrowth) both
+// at least 1e-2 times those of the last pivoting factorization; otherwise, and when
+// klu_refactor meets a zero pivot, the matrix is factored again with pivoting (KLU User
+// Guide, Davis & Palamadai Natarajan: klu_refactor does not check the pivots, klu_rgrowth
+// and klu_rcond tell when to pivot again).
 class KluBackend final : public detail::KktBackend {
  public:
+  KluBackend() { klu_defaults(&common_); }
+  ~KluBackend() override { release(); }
+  KluBackend(const KluBackend&) = delete;
+  KluBackend& operator=(const KluBackend&) = delete;
+
   bool analyze(const SpMat& A, std::string& message) override {
-    klu_.analyzePattern(A);
-    // the wrapper's info() asserts after a failed analysis; KLU's own status does not
-    if (klu_.kluCommon().status == KLU_OK) {
-      analyzed_ = true;
+    release();
+    n_ = static_cast<int>(A.rows());
+    if (!A.isCompressed()) {
+      message = "KLU: the matrix is not in compressed storage";
+      return false;
+    }
+    symbolic_ = klu_analyze(n_, const_cast<int*>(A.outerIndexPtr()),
+                            const_cast<int*>(A.innerIndexPtr()), &common_);
+    if (symbolic_ && common_.status == KLU_OK) {
       message.clear();
       return true;
     }
-    analyzed_ = false;
-    message = klu_status(klu_.kluCommon());
+    message = klu_status(common_);
     return false;
   }
   bool factorize(const SpMat& A, std::string& message) override {
-    if (!analyzed_) {
+    if (!symbolic_) {
       message = "KLU: no symbolic analysis";
       return false;
     }
-    klu_.factorize(A);
+    int* ap = const_cast<int*>(A.outerIndexPtr());
+    int* ai = const_cast<int*>(A.innerIndexPtr());
+    double* ax = const_cast<double*>(A.valuePtr());
+    if (reuse_ && numeric_ && same_pattern(A) &&
+        klu_refactor(ap, ai, ax, symbolic_, numeric_, &common_) &&
+        klu_rcond(symbolic_, numeric_, &common_) &&
+        klu_rgrowth(ap, ai, ax, symbolic_, numeric_, &common_) && common_.rcond >= 1e-2 * rcond_ &&
+        common_.rgrowth >= 1e-2 * rgrowth_) {
+      ++refactorizations_;
+      reused_ = true;
+      return true;
+    }
+    reused_ = false;
+    if (numeric_) klu_free_numeric(&numeric_, &common_);
     // halt_if_singular (the default) makes klu_factor return no factors on a zero pivot
-    if (klu_.kluCommon().status == KLU_OK) return true;
-    message = klu_status(klu_.kluCommon());
-    return false;
+    numeric_ = klu_factor(ap, ai, ax, symbolic_, &common_);
+    if (!numeric_ || common_.status != KLU_OK) {
+      message = klu_status(common_);
+      if (numeric_) klu_free_numeric(&numeric_, &common_);
+      return false;
+    }
+    klu_rcond(symbolic_, numeric_, &common_);
+    klu_rgrowth(ap, ai, ax, symbolic_, numeric_, &common_);
+    rcond_ = common_.rcond;
+    rgrowth_ = common_.rgrowth;
+    pattern_ap_.assign(ap, ap + n_ + 1);
+    pattern_ai_.assign(ai, ai + A.nonZeros());
+    if (reuse_) source_.assign(ax, ax + A.nonZeros());
+    return true;
   }
-  void solve(const VecX& b, VecX& x) const override { x = klu_.solve(b); }
+  void solve(const VecX& b, VecX& x) const override {
+    x = b;
+    klu_solve(symbolic_, numeric_, n_, 1, x.data(), &common_);
+  }
+  int reused_pivots() const override { return refactorizations_; }
+  void set_reuse_pivots(bool on) override { reuse_ = on; }
+  const std::vector<double>& pivot_source() const override {
+    static const std::vector<double> none;
+    return reused_ ? source_ : none;
+  }
 
  private:
-  Eigen::KLU<SpMat> klu_;
-  bool analyzed_ = false;
+  bool same_pattern(const SpMat& A) const {
+    return A.rows() == n_ && static_cast<std::size_t>(A.nonZeros()) == pattern_ai_.size() &&
+           std::equal(pattern_ap_.begin(), pattern_ap_.end(), A.outerIndexPtr()) &&
+           std::equal(pattern_ai_.begin(), pattern_ai_.end(), A.innerIndexPtr());
+  }
+  void release() {
+    if (numeric_) klu_free_numeric(&numeric_, &common_);
+    if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
+    pattern_ap_.clear();
+    pattern_ai_.clear();
+    reused_ = false;
+  }
+
+  mutable klu_common common_{};
+  klu_symbolic* symbolic_ = nullptr;
+  klu_numeric* numeric_ = nullptr;
+  int n_ = 0;
+  double rcond_ = 0.0, rgrowth_ = 0.0;  // of the last pivoting factorization
+  std::vector<int> pattern_ap_, pattern_ai_;
+  std::vector<double> source_;  // the values of the last pivoting factorization (with reuse_)
+  bool reuse_ = false, reused_ = false;
+  int refactorizations_ = 0;
 };
 
 class UmfpackBackend final : public detail::KktBackend {
@@ -170,6 +254,18 @@ bool KktSolver::factorize(const SpMat& A) {
   factorized_ = backend_->factorize(A, message_);
   if (factorized_) message_.clear();
   return factorized_;
+}
+
+int KktSolver::reused_pivots() const {
+  return backend_->reused_pivots();
+}
+
+void KktSolver::set_reuse_pivots(bool on) {
+  backend_->set_reuse_pivots(on);
+}
+
+const std::vector<double>& KktSolver::pivot_source() const {
+  return backend_->pivot_source();
 }
 
 void KktSolver::solve(const VecX& b, VecX& x) const {

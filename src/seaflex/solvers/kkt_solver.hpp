@@ -19,12 +19,15 @@
 // KLU's here because it drops the exact zeros of the fixed pattern from its factors (the
 // riser bends in one plane); SparseLU's solve is about 35 % slower than KLU's.
 //
+// KLU is called directly (kkt_solver.cpp): the first factorization of a pattern pivots
+// (klu_factor), later ones reuse its pivot order (klu_refactor, no allocation, about half
+// the time) while the pivots stay sound (klu_rcond and klu_rgrowth against the last
+// pivoting factorization), and pivot again otherwise.
 // Limitations: UMFPACK allocates twice in every solve (Eigen's wrapper calls
 // umfpack_di_solve, not umfpack_di_wsolve), against the "no time step allocates" rule of
-// DESIGN.md; KLU and SparseLU do not allocate in solve(). Every numeric factorization
-// allocates (SparseLU 10, KLU 20, UMFPACK 30 mallocs for examples/riser_in_current.yaml):
-// Eigen's KLU wrapper frees the factors and calls klu_factor again rather than
-// klu_refactor. Iterative refinement of UMFPACK is switched off: it would read the matrix
+// DESIGN.md; KLU and SparseLU do not allocate in solve(). A pivoting numeric factorization
+// allocates (SparseLU 10, KLU 20, UMFPACK 30 mallocs for examples/riser_in_current.yaml).
+// Iterative refinement of UMFPACK is switched off: it would read the matrix
 // passed to factorize() again at solve() time, and the caller may have changed or freed it.
 #pragma once
 
@@ -32,6 +35,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "seaflex/core/types.hpp"
 
@@ -72,6 +76,19 @@ class KktSolver {
   const std::string& message() const { return message_; }
   bool factorized() const { return factorized_; }
   int factorizations() const { return factorizations_; }
+  /// Of those, the ones that reused the pivot order of an earlier one (KLU's klu_refactor;
+  /// 0 for the other backends).
+  int reused_pivots() const;
+  /// Off by default: factorize() pivots every matrix, so the factors depend on that matrix
+  /// alone. On (KLU; the others ignore it): a matrix of the pattern last factored reuses
+  /// that factorization's pivot order while it stays sound (file header). The factors then
+  /// depend on the matrix that set the order too: pivot_source() holds its values, so that
+  /// a restart can factor it first and get the same factors (generalized-alpha's
+  /// checkpoints).
+  void set_reuse_pivots(bool on);
+  /// The values (in the stored order of the current pattern) of the matrix whose pivot order
+  /// the current factors reused; empty when they pivoted themselves.
+  const std::vector<double>& pivot_source() const;
   LinearSolverKind kind() const { return kind_; }
 
   /// "sparselu", "klu", "umfpack"; nullopt for any other name.

@@ -34,6 +34,9 @@ struct DaeRequest {
   /// instead, from the same element blocks, and the constraint blocks are left out (e.g.
   /// M(q) a with scales {1, 0, 0} without forming M(q))
   const VecX* product_with = nullptr;
+  /// C_q alone into DaeEval::Cq (m x n), without the KKT matrix (only if
+  /// Dae::supports_constraint_jacobian(); e.g. a projection's directions C_q^T)
+  bool constraint_jacobian = false;
 };
 
 /// Results and workspace of evaluations; allocated once by Dae::make_eval().
@@ -47,6 +50,7 @@ struct DaeEval {
   VecX product;     ///< n + m: the top-left block times DaeRequest::product_with, first n
   VecX product_x;   ///< n + m: workspace, product_with and zeros
   math::SparseBlockAssembler kkt;
+  math::SparseBlockAssembler Cq;  ///< m x n: C_q, when DaeRequest::constraint_jacobian
   std::vector<ConstraintEval> constraint_buffers;
   std::vector<MatX> hessian_buffers;
 };
@@ -66,6 +70,8 @@ class Dae {
   virtual bool constant_mass() const { return false; }
   /// True when evaluate() honours DaeRequest::product_with.
   virtual bool supports_product() const { return false; }
+  /// True when evaluate() honours DaeRequest::constraint_jacobian.
+  virtual bool supports_constraint_jacobian() const { return false; }
   /// Names for messages: "beam.n3.r'.z", "support beam.n0: x".
   virtual std::string coordinate_name(Index i) const = 0;
   virtual std::string constraint_name(Index row) const = 0;

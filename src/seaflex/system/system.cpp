@@ -46,6 +46,7 @@ void System::finalize() {
     m_ += c->num_rows();
   }
   pattern_.resize(n_ + m_, n_ + m_);
+  cq_pattern_.resize(m_, n_);
   for (auto& b : bodies_) b->declare_blocks(pattern_);
   for (auto& f : forces_) f->declare_blocks(pattern_);
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
@@ -57,8 +58,11 @@ void System::finalize() {
     cq_block_.push_back(pattern_.declare_block(rows, dofs));
     cqt_block_.push_back(pattern_.declare_block(dofs, rows));
     hess_block_.push_back(c.is_linear() ? -1 : pattern_.declare_block(dofs, dofs));
+    for (Index r = 0; r < c.num_rows(); ++r) rows[r] = row_offset_[k] + r;
+    cq_only_block_.push_back(cq_pattern_.declare_block(rows, dofs));
   }
   pattern_.finalize();
+  cq_pattern_.finalize();
   finalized_ = true;
 }
 
@@ -83,6 +87,7 @@ DaeEval System::make_eval() const {
   e.product = VecX::Zero(n_ + m_);
   e.product_x = VecX::Zero(n_ + m_);
   e.kkt = pattern_;
+  e.Cq = cq_pattern_;
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Index rows = constraints_[k]->num_rows();
     const Index cols = static_cast<Index>(constraint_dofs_[k].size());
@@ -122,8 +127,11 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
     for (const auto& b : bodies_) b->assemble(state, target);
     for (const auto& f : forces_) f->assemble(state, request.load_factor, target);
   }
-  if (!request.constraints && !request.matrix && !request.reaction_forces) return;
+  if (!request.constraints && !request.matrix && !request.reaction_forces &&
+      !request.constraint_jacobian)
+    return;
   if (request.reaction_forces) out.CqT_lambda.setZero();
+  if (request.constraint_jacobian) out.Cq.set_zero();
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const Constraint& c = *constraints_[k];
     ConstraintEval& ce = out.constraint_buffers[k];
@@ -144,6 +152,7 @@ void System::evaluate(const State& state, const DaeRequest& request, DaeEval& ou
       for (std::size_t i = 0; i < dofs.size(); ++i)
         for (Index r = 0; r < c.num_rows(); ++r)
           out.CqT_lambda[dofs[i]] += ce.Cq(r, i) * state.lambda[r0 + r];
+    if (request.constraint_jacobian) out.Cq.add(cq_only_block_[k], ce.Cq);
     if (request.matrix && !product) {
       out.kkt.add(cq_block_[k], ce.Cq);
       out.kkt.add_transposed(cqt_block_[k], ce.Cq);

@@ -60,6 +60,7 @@ class System : public Dae {
   double step_scale(const State& state, const VecX& dq) const override;
   double length_scale() const override;
   bool supports_product() const override { return true; }
+  bool supports_constraint_jacobian() const override { return true; }
   void start(const State& state) override;
   void accept_step(const State& state) override;
   /// The constraint that owns a row of the multiplier vector; nullptr when out of range.
@@ -78,6 +79,8 @@ class System : public Dae {
   std::vector<std::vector<Index>> constraint_dofs_;
   std::vector<math::BlockId> cq_block_, cqt_block_, hess_block_;
   math::SparseBlockAssembler pattern_;
+  std::vector<math::BlockId> cq_only_block_;  // C_q alone (DaeRequest::constraint_jacobian)
+  math::SparseBlockAssembler cq_pattern_;
 };
 
 }  // namespace seaflex
