@@ -125,6 +125,35 @@ TEST(CableElastic, RigidMotionGivesZeroForce) {
     }
 }
 
+// add_forces without a tangent takes the fused path for the exact axial model with either
+// exact bending model and 2 to 8 points (ancf_cable_elastic.hpp): the same forces and energy
+// as the separate functions, to round-off (1e-13 of the force's norm), at small and large
+// deformation; 9 points take the separate functions themselves (identical)
+TEST(CableElastic, FusedForcesEqualTheSeparateModels) {
+  for (const BendingModel bending : {BendingModel::kExact, BendingModel::kExactDeformed})
+    for (int points = 2; points <= 9; ++points) {
+      const CableElasticity el(kL, kEA, kEI, AxialModel::kExact, bending, points);
+      for (double amplitude : {0.01, 0.5, 2.0}) {
+        const Vec12 e = deformed(amplitude);
+        Vec12 fused = Vec12::Zero(), separate = Vec12::Zero();
+        const double U = el.add_forces(e, fused, nullptr);
+        double U_ref = el.add_axial_exact(e, separate, nullptr);
+        U_ref += bending == BendingModel::kExact
+                     ? el.add_bending_exact(e, separate, nullptr)
+                     : el.add_bending_exact_deformed(e, separate, nullptr);
+        EXPECT_GT(separate.norm(), 1.0);
+        EXPECT_LT((fused - separate).norm(), 1e-13 * separate.norm())
+            << to_string(bending) << " points " << points << " amplitude " << amplitude;
+        EXPECT_NEAR(U, U_ref, 1e-13 * std::abs(U_ref));
+        // with a tangent: the separate functions, the same forces
+        Vec12 with_k = Vec12::Zero();
+        Mat12 K = Mat12::Zero();
+        el.add_forces(e, with_k, &K);
+        EXPECT_LT((with_k - separate).norm(), 1e-13 * separate.norm());
+      }
+    }
+}
+
 // L2 (closed form, exact tensor) and the exact axial model (Gauss quadrature of the
 // same degree-8 polynomial) agree to round-off
 TEST(CableElastic, L2ClosedFormEqualsQuadrature) {

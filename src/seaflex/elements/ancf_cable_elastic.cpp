@@ -77,6 +77,10 @@ CableElasticity::CableElasticity(double l, double EA, double EI, AxialModel axia
     w_.push_back(rule.weights[k] * l);
     ds_.push_back(shape_dx(rule.points[k], l));
     dds_.push_back(shape_dxx(rule.points[k], l));
+    for (int i = 0; i < 4; ++i) {
+      ds_cols_.push_back(ds_.back()[i]);
+      dds_cols_.push_back(dds_.back()[i]);
+    }
   }
   B1_ = axial_matrix(l);
   B2_ = bending_matrix(l);
@@ -92,7 +96,61 @@ CableElasticity::CableElasticity(double l, double EA, double EI, AxialModel axia
   }
 }
 
+template <int G>
+double CableElasticity::add_exact_forces(const Vec12& e, Vec12& Q, int power) const {
+  // thesis eq. (11)-(14), (20) at G points at once; the same expressions as add_axial_exact
+  // and add_bending_power with f = N u, N = g h - p^2, u = g^-n
+  using M3G = Eigen::Matrix<double, 3, G>;
+  using RowG = Eigen::Array<double, 1, G>;
+  const Eigen::Map<const Eigen::Matrix<double, 4, G>> ds(ds_cols_.data()), dds(dds_cols_.data());
+  const Eigen::Map<const RowG> w(w_.data());
+  const Mat34 R = relative_nodes(e);
+  const M3G a = R * ds;   // r' at the points
+  const M3G b = R * dds;  // r''
+  const RowG g = a.colwise().squaredNorm().array();
+  const RowG h = b.colwise().squaredNorm().array();
+  const RowG p = a.cwiseProduct(b).colwise().sum().array();
+  const RowG eps = 0.5 * (g - 1.0);  // thesis eq. (12)
+  const RowG gi = g.inverse();
+  const RowG u = power == 3 ? RowG(gi * gi * gi) : RowG(gi * gi);
+  const RowG N = g * h - p * p;
+  const RowG wb = 0.5 * EI_ * w;
+  const double U = 0.5 * EA_ * (w * eps * eps).sum() + (wb * N * u).sum();
+  // the coefficients of r' and r'' in the 3 x G matrices that multiply s'^T (Fa) and s''^T
+  // (Fb): the axial -EA w eps r' (eq. 20), and add_bending_power's
+  // f_a = r' (2 h u - 2 n N u / g) - r'' (2 p u), f_b = r'' (2 g u) - r' (2 p u) times -wb
+  const RowG fa_a = -EA_ * w * eps - wb * (2.0 * h * u - (2.0 * power) * N * u * gi);
+  const RowG cross = 2.0 * wb * p * u;  // of r'' in Fa and of r' in Fb
+  const RowG fb_b = -2.0 * wb * g * u;
+  const M3G Fa = a * fa_a.matrix().asDiagonal() + b * cross.matrix().asDiagonal();
+  const M3G Fb = b * fb_b.matrix().asDiagonal() + a * cross.matrix().asDiagonal();
+  Eigen::Map<Mat34>(Q.data()) += Fa * ds.transpose() + Fb * dds.transpose();
+  return U;
+}
+
 double CableElasticity::add_forces(const Vec12& e, Vec12& Q, Mat12* K) const {
+  if (!K && axial_ == AxialModel::kExact &&
+      (bending_ == BendingModel::kExact || bending_ == BendingModel::kExactDeformed)) {
+    const int power = bending_ == BendingModel::kExact ? 2 : 3;
+    switch (w_.size()) {
+      case 2:
+        return add_exact_forces<2>(e, Q, power);
+      case 3:
+        return add_exact_forces<3>(e, Q, power);
+      case 4:
+        return add_exact_forces<4>(e, Q, power);
+      case 5:
+        return add_exact_forces<5>(e, Q, power);
+      case 6:
+        return add_exact_forces<6>(e, Q, power);
+      case 7:
+        return add_exact_forces<7>(e, Q, power);
+      case 8:
+        return add_exact_forces<8>(e, Q, power);
+      default:
+        break;
+    }
+  }
   double U = 0.0;
   switch (axial_) {
     case AxialModel::kExact:

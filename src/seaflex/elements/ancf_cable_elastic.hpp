@@ -35,6 +35,11 @@
 //           (eq. 58) and the K_t2 term of eq. (59) with the factor 2 EI kbar^2/(l fbar^6)
 //           that follows from differentiating fbar (eq. 54); eq. (59) itself is
 //           garbled in the text. Meant to be used with kL2 (thesis).
+// Forces alone (no tangent) of the default models (exact axial with exact or
+// exact_deformed bending) with 2 to 8 quadrature points are computed in one pass over the
+// points, vectorized across them (r' and r'' of all points as one 3 x 4 by 4 x G product,
+// the force as 3 x G by G x 4 products): the same sums as the separate functions, in
+// another order (round-off; CableElastic.FusedForcesEqualTheSeparateModels).
 // Conventions: add_* functions add the elastic force Q = -dU/de to Q and the tangent
 // stiffness K = -dQ/de to K (when K is not null), and return the strain energy.
 #pragma once
@@ -96,6 +101,9 @@ class CableElasticity {
  private:
   // the exact bending energy 1/2 EI int |r' x r''|^2 / |r'|^(2 n) dx for n = power
   double add_bending_power(const Vec12& e, Vec12& Q, Mat12* K, int power) const;
+  // the exact axial and bending (power n) forces, no tangent, G quadrature points at once
+  template <int G>
+  double add_exact_forces(const Vec12& e, Vec12& Q, int power) const;
 
   double l_, EA_, EI_;
   AxialModel axial_;
@@ -103,6 +111,8 @@ class CableElasticity {
   std::vector<double> w_;            // quadrature weights times l (integrate over x)
   std::vector<Vec4> ds_;             // s_i' at the quadrature points
   std::vector<Vec4> dds_;            // s_i'' at the quadrature points
+  std::vector<double> ds_cols_;      // 4 x G, column k = s' at point k (add_exact_forces)
+  std::vector<double> dds_cols_;     // 4 x G, column k = s'' at point k
   Mat4 B1_;                          // int s_i' s_j' dx
   Mat4 B2_;                          // int s_i'' s_j'' dx
   Eigen::Matrix<double, 16, 16> D_;  // D(4i+j, 4k+m) = int s_i' s_j' s_k' s_m' dx
