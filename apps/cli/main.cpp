@@ -25,6 +25,8 @@
 #include "seaflex/core/interrupt.hpp"
 #include "seaflex/core/output_file.hpp"
 #include "seaflex/core/parallel.hpp"
+#include "seaflex/hydro/ocean.hpp"
+#include "seaflex/hydro/wave_grid.hpp"
 #include "seaflex/io/model_loader.hpp"
 #include "seaflex/post/mode_shapes.hpp"
 #include "seaflex/solvers/modal.hpp"
@@ -273,6 +275,13 @@ int cmd_bench(const std::string& file, double duration) {
       "({:.0f} %)\n",
       b.wave_kinematics_s, 100 * b.wave_kinematics_s / wall, st.assembly_s - b.wave_kinematics_s,
       100 * (st.assembly_s - b.wave_kinematics_s) / wall);
+  if (const hydro::WaveGrid* grid = model.ocean ? model.ocean->waves().grid() : nullptr)
+    fmt::print(
+        "wave grid: {} columns started, {} blocks of {} levels filled ({:.3g} and {:.3g} per "
+        "step)\n",
+        grid->columns_started(), grid->blocks_filled(), hydro::WaveGrid::kBlock,
+        static_cast<double>(grid->columns_started()) / std::max(1L, rep.steps),
+        static_cast<double>(grid->blocks_filled()) / std::max(1L, rep.steps));
   return 0;
 }
 

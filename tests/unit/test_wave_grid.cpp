@@ -366,3 +366,48 @@ TEST(WaveGrid, ElevationBound) {
   EXPECT_LT(worst, exact.elevation_bound());
   EXPECT_GT(worst, 2.0);  // the storm's crests (Hs 6 m) were sampled
 }
+
+// Depth truncation (wave_grid.hpp): every level near the surface sums all 200 components,
+// deep levels far fewer (the storm's short waves die out as e^{k z}); the grid still equals
+// the exact sum to 1e-12 of the scales at nodes of deep, truncated levels (the dropped
+// terms' bound is 1e-14 of the surface's largest value), and a field whose components are
+// listed in another order (reversed) gives the same grid values to round-off.
+TEST(WaveGrid, DepthTruncationKeepsTheExactSum) {
+  const WaveField exact = storm(290.0, false);
+  const WaveGridSpec spec;
+  const WaveGrid grid(exact, spec);
+  const auto& z = grid.levels();
+  const std::size_t N = exact.components().size();
+  EXPECT_EQ(grid.components_at_level(0), N);
+  std::size_t deep = 0;  // a level at about -100 m
+  while (z[deep] > -100.0) ++deep;
+  std::printf("components summed: %zu at z = %.1f m, %zu at z = %.1f m (of %zu)\n",
+              grid.components_at_level(deep), z[deep], grid.components_at_level(z.size() - 1),
+              z.back(), N);
+  EXPECT_LT(grid.components_at_level(deep), 3 * N / 4);
+  EXPECT_LT(grid.components_at_level(z.size() - 1), N / 2);
+  for (std::size_t j = 1; j < z.size(); ++j)
+    EXPECT_LE(grid.components_at_level(j), grid.components_at_level(j - 1));  // fewer deeper
+  double su, sa, se;
+  surface_sigmas(exact, su, sa, se);
+  const double b = exact.components().front().direction;
+  std::vector<WaveComponent> reversed(exact.components().rbegin(), exact.components().rend());
+  const WaveField shuffled(290.0, kG, kRho, reversed, Ramp{}, false);
+  const WaveGrid grid2(shuffled, spec);
+  for (const int n : {1000, 1377})
+    for (const int m : {-7, 0, 12})
+      for (const std::size_t j : {deep - 3, deep, z.size() - 2, z.size() - 1}) {
+        const double t = n * spec.dt, s = m * spec.ds;
+        const Vec3 p(s * std::cos(b), s * std::sin(b), z[j]);
+        const FluidKinematics kx = exact.kinematics(p, t), kg = grid.kinematics(p, t);
+        ASSERT_TRUE(kx.wet && kg.wet);
+        EXPECT_LT((kg.velocity - kx.velocity).norm(), 1e-12 * su) << j;
+        EXPECT_LT((kg.acceleration - kx.acceleration).norm(), 1e-12 * sa) << j;
+        EXPECT_LT(std::abs(kg.dynamic_pressure - kx.dynamic_pressure), 1e-12 * kRho * kG * se);
+        // between the nodes too: the same values from the reversed list
+        const Vec3 q = p + Vec3(0.11, 0.0, -0.37);
+        const FluidKinematics k1 = grid.kinematics(q, t + 0.03), k2 = grid2.kinematics(q, t + 0.03);
+        EXPECT_LT((k1.velocity - k2.velocity).norm(), 1e-13 * su);
+        EXPECT_LT((k1.acceleration - k2.acceleration).norm(), 1e-13 * sa);
+      }
+}

@@ -47,7 +47,10 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
     throw std::invalid_argument(fmt::format("dz_growth must be >= 0, got {}", spec.dz_growth));
   if (!(spec.dt > 0.0) || !std::isfinite(spec.dt))
     throw std::invalid_argument(fmt::format("dt must be > 0, got {}", spec.dt));
-  const auto& comps = field_.components();
+  comps_ = field_.components();
+  std::stable_sort(comps_.begin(), comps_.end(),
+                   [](const WaveComponent& a, const WaveComponent& b) { return a.k < b.k; });
+  const auto& comps = comps_;
   if (!comps.empty()) {
     for (const auto& c : comps)
       if (c.direction != comps.front().direction)
@@ -123,6 +126,33 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
       }
     }
   }
+  // depth truncation (file header): at each level the shortest components whose summed
+  // bound is below kTruncation of the surface's, for each of the five values
+  keep_.assign(J, N);
+  std::array<double, 3> surface{};  // sum |a| w, sum |a| w^2, sum |a|
+  auto weights = [&](std::size_t i) {
+    const double a = std::abs(comps[i].amplitude), w = std::abs(comps[i].omega);
+    return std::array<double, 3>{a * w, a * w * w, a};
+  };
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t q = 0; q < 3; ++q) surface[q] += weights(i)[q];
+  for (std::size_t j = 0; j < J; ++j) {
+    std::array<double, 3> tail{};  // of u and du/dt (both factors), and of p
+    std::size_t n = N;
+    while (n > 0) {
+      const std::size_t i = n - 1;
+      const auto wq = weights(i);
+      const double fhv = std::max(std::abs(fh_[j * N + i]), std::abs(fv_[j * N + i]));
+      const std::array<double, 3> next{tail[0] + wq[0] * fhv, tail[1] + wq[1] * fhv,
+                                       tail[2] + wq[2] * std::abs(fp_[j * N + i])};
+      bool small = true;
+      for (std::size_t q = 0; q < 3; ++q) small = small && next[q] <= kTruncation * surface[q];
+      if (!small) break;
+      tail = next;
+      --n;
+    }
+    keep_[j] = n;
+  }
 }
 
 std::int64_t WaveGrid::columns_started() const {
@@ -145,7 +175,7 @@ const std::vector<double>& WaveGrid::station_phasors(std::int64_t m) const {
     station_phasors_.clear();  // bounded memory (a line sweeping across many stations)
   auto [it, inserted] = station_phasors_.try_emplace(m);
   if (inserted) {
-    const auto& comps = field_.components();
+    const auto& comps = comps_;
     const double s = static_cast<double>(m) * spec_.ds;
     it->second.resize(2 * comps.size());
     for (std::size_t i = 0; i < comps.size(); ++i) {
@@ -159,7 +189,7 @@ const std::vector<double>& WaveGrid::station_phasors(std::int64_t m) const {
 
 WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
   Slot& slot = slot_of(n);
-  const auto& comps = field_.components();
+  const auto& comps = comps_;
   const std::size_t N = comps.size();
   if (slot.n != n) {
     stored_ -= static_cast<std::int64_t>(slot.columns.size());
@@ -206,23 +236,23 @@ WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
 
 void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1) const {
   const std::size_t J = z_.size();
-  const auto& comps = field_.components();
+  const auto N = static_cast<Eigen::Index>(comps_.size());
   for (std::size_t blk = j0 / kBlock; blk <= j1 / kBlock; ++blk) {
     if (col.filled[blk]) continue;
     col.filled[blk] = 1;
     ++blocks_;
-    // the exact sums at the block's levels, without the ramp (WaveField::airy): five dot
-    // products of length N per level (Eigen's vectorized reductions)
+    // the exact sums at the block's levels, without the ramp (WaveField::airy), over the
+    // components each level keeps (depth truncation): five dot products per level (Eigen's
+    // vectorized reductions)
     const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
-    const auto N = static_cast<Eigen::Index>(comps.size());
     using CMap = Eigen::Map<const Eigen::VectorXd>;
-    const CMap c_uh(col.coef.data(), N), c_ah(col.coef.data() + N, N),
-        c_uz(col.coef.data() + 2 * N, N), c_az(col.coef.data() + 3 * N, N),
-        c_p(col.coef.data() + 4 * N, N);
     for (std::size_t j = lo; j < hi; ++j) {
-      const CMap fh(fh_.data() + j * static_cast<std::size_t>(N), N);
-      const CMap fv(fv_.data() + j * static_cast<std::size_t>(N), N);
-      const CMap fp(fp_.data() + j * static_cast<std::size_t>(N), N);
+      const auto n = static_cast<Eigen::Index>(keep_[j]);
+      const CMap c_uh(col.coef.data(), n), c_ah(col.coef.data() + N, n),
+          c_uz(col.coef.data() + 2 * N, n), c_az(col.coef.data() + 3 * N, n),
+          c_p(col.coef.data() + 4 * N, n);
+      const std::size_t row = j * static_cast<std::size_t>(N);
+      const CMap fh(fh_.data() + row, n), fv(fv_.data() + row, n), fp(fp_.data() + row, n);
       col.values[j] = fh.dot(c_uh);
       col.values[J + j] = fv.dot(c_uz);
       col.values[2 * J + j] = fh.dot(c_ah);
