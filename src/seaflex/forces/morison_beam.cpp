@@ -36,6 +36,11 @@ MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
   if (!(reuse_ >= 0.0)) throw std::invalid_argument("MorisonBeam: fluid_reuse must be >= 0");
   if (reuse_ > 0.0)
     kept_.resize(static_cast<std::size_t>(beam_.num_elements()) * rule_.points.size());
+  for (int k = 0; k < beam_.num_elements(); ++k)
+    for (const double xi : rule_.points) {
+      wet_shape_.push_back(ancf_cable::shape(xi, beam_.element_length(k)));
+      wet_shape_dx_.push_back(ancf_cable::shape_dx(xi, beam_.element_length(k)));
+    }
 }
 
 hydro::FluidPoint MorisonBeam::fluid_at(int k, std::size_t g, const Vec3& r, double t) const {
@@ -82,7 +87,6 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c,
   PointLoad out;
   const double stretch = rp.norm();
   const Vec3 tt = rp / stretch;
-  const Mat3 P = Mat3::Identity() - tt * tt.transpose();
   const Vec3 u = fl.velocity - rdot;
   const double ua = tt.dot(u);
   const Vec3 un = u - ua * tt;
@@ -98,6 +102,7 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c,
   out.f *= load_factor;  // an external load: statics steps it in with the load factor
   if (!derivatives) return out;
   // d f / d u_n of the drag, and the derivatives through u = U - r_dot and t = r'/|r'|
+  const Mat3 P = Mat3::Identity() - tt * tt.transpose();
   Mat3 Dn = cd * unn * Mat3::Identity();
   if (unn > 0.0) Dn += (cd / unn) * un * un.transpose();
   const Mat3 Da = cax * 2.0 * std::abs(ua) * tt * tt.transpose();
@@ -149,11 +154,13 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         K += s.km * ancf_cable::mass_matrix(m_int, l);
     }
     const auto [xi0, xi1] = wet_interval(state, k);
+    const bool wholly_wet = xi0 == 0.0 && xi1 == 1.0;
     for (std::size_t g = 0; xi1 > xi0 && g < rule_.points.size(); ++g) {
       const double xi = xi0 + (xi1 - xi0) * rule_.points[g];
       const double dx = l * (xi1 - xi0) * rule_.weights[g];
-      const Vec4 sh = ancf_cable::shape(xi, l);
-      const Vec4 shx = ancf_cable::shape_dx(xi, l);
+      const std::size_t at = static_cast<std::size_t>(k) * rule_.points.size() + g;
+      const Vec4 sh = wholly_wet ? wet_shape_[at] : ancf_cable::shape(xi, l);
+      const Vec4 shx = wholly_wet ? wet_shape_dx_[at] : ancf_cable::shape_dx(xi, l);
       const Vec3 r = E * sh, rp = E * shx, rdot = Ed * sh;
       const bool deriv = want_matrix && (s.kq != 0.0 || s.kv != 0.0);
       const PointLoad pl = point_load(c, fluid_at(k, g, r, state.t), rp, rdot, load_factor, deriv);

@@ -93,8 +93,8 @@ class MorisonBeam : public Force {
   /// Load per unit reference length at one point, and its derivatives.
   struct PointLoad {
     Vec3 f = Vec3::Zero();
-    Mat3 df_dv = Mat3::Zero();   // d f / d r_dot
-    Mat3 df_drp = Mat3::Zero();  // d f / d r'
+    Mat3 df_dv;   // d f / d r_dot (set only when the derivatives are asked for)
+    Mat3 df_drp;  // d f / d r'
   };
   PointLoad point_load(const MorisonBeamCoefficients& c, const hydro::FluidPoint& fl,
                        const Vec3& rp, const Vec3& rdot, double load_factor, bool derivatives,
@@ -112,6 +112,9 @@ class MorisonBeam : public Force {
   std::vector<MorisonBeamCoefficients> coefficients_;  // per beam section
   std::shared_ptr<const hydro::Ocean> ocean_;
   math::QuadratureRule rule_;
+  // the shape functions and their slopes at the Gauss points of a wholly wet element k:
+  // [k * gauss points + g] (the common case, computed once)
+  std::vector<ancf_cable::Vec4> wet_shape_, wet_shape_dx_;
   std::vector<math::BlockId> blocks_;
   double reuse_ = 0.0;                   // fluid_reuse (m)
   mutable std::vector<KeptFluid> kept_;  // [k * gauss points + g]
