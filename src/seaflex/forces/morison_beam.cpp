@@ -87,6 +87,7 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c,
   PointLoad out;
   const double stretch = rp.norm();
   const Vec3 tt = rp / stretch;
+  out.t = tt;
   const Vec3 u = fl.velocity - rdot;
   const double ua = tt.dot(u);
   const Vec3 un = u - ua * tt;
@@ -171,7 +172,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       if (!want_matrix) continue;
       if (product) {
         if (s.km != 0.0 && added_mass) {  // sum_i S_i^T (ca I + (ca_ax - ca) t t^T) S x dx
-          const Vec3 tt = rp.normalized();
+          const Vec3& tt = pl.t;
           const Vec3 x_at = ancf_cable::as_nodes(x) * sh;
           const Vec3 f =
               (s.km * dx) * (ca_mass * x_at + (ca_axial_mass - ca_mass) * tt.dot(x_at) * tt);
@@ -180,7 +181,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
         continue;
       }
       if (s.km != 0.0 && added_mass) {
-        const Vec3 tt = rp.normalized();
+        const Vec3& tt = pl.t;
         add_shape_product(
             K, sh, sh, ca_mass * Mat3::Identity() + (ca_axial_mass - ca_mass) * tt * tt.transpose(),
             s.km * dx);

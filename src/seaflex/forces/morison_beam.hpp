@@ -93,6 +93,7 @@ class MorisonBeam : public Force {
   /// Load per unit reference length at one point, and its derivatives.
   struct PointLoad {
     Vec3 f = Vec3::Zero();
+    Vec3 t;       // the unit tangent r' / |r'|
     Mat3 df_dv;   // d f / d r_dot (set only when the derivatives are asked for)
     Mat3 df_drp;  // d f / d r'
   };
