@@ -222,6 +222,13 @@ TEST(KktSolver, KluPivotsAgainWhenTheOldOrderFails) {
   solver.solve(D * x_exact, x);
   EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-13);
   EXPECT_EQ(solver.reused_pivots(), 1);
+  // a matrix in uncompressed storage is read through a compressed copy: the same solution
+  Ds.uncompress();
+  ASSERT_FALSE(Ds.isCompressed());
+  KktSolver fresh(LinearSolverKind::kKlu);
+  ASSERT_TRUE(fresh.factorize(Ds)) << fresh.message();
+  fresh.solve(D * x_exact, x);
+  EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-13);
 }
 
 // A new pattern (here: another size) is analyzed again.

@@ -90,13 +90,10 @@ class KluBackend final : public detail::KktBackend {
   KluBackend(const KluBackend&) = delete;
   KluBackend& operator=(const KluBackend&) = delete;
 
-  bool analyze(const SpMat& A, std::string& message) override {
+  bool analyze(const SpMat& matrix, std::string& message) override {
     release();
+    const SpMat& A = compressed(matrix);
     n_ = static_cast<int>(A.rows());
-    if (!A.isCompressed()) {
-      message = "KLU: the matrix is not in compressed storage";
-      return false;
-    }
     symbolic_ = klu_analyze(n_, const_cast<int*>(A.outerIndexPtr()),
                             const_cast<int*>(A.innerIndexPtr()), &common_);
     if (symbolic_ && common_.status == KLU_OK) {
@@ -106,11 +103,12 @@ class KluBackend final : public detail::KktBackend {
     message = klu_status(common_);
     return false;
   }
-  bool factorize(const SpMat& A, std::string& message) override {
+  bool factorize(const SpMat& matrix, std::string& message) override {
     if (!symbolic_) {
       message = "KLU: no symbolic analysis";
       return false;
     }
+    const SpMat& A = compressed(matrix);
     int* ap = const_cast<int*>(A.outerIndexPtr());
     int* ai = const_cast<int*>(A.innerIndexPtr());
     double* ax = const_cast<double*>(A.valuePtr());
@@ -132,13 +130,15 @@ class KluBackend final : public detail::KktBackend {
       if (numeric_) klu_free_numeric(&numeric_, &common_);
       return false;
     }
-    klu_rcond(symbolic_, numeric_, &common_);
-    klu_rgrowth(ap, ai, ax, symbolic_, numeric_, &common_);
-    rcond_ = common_.rcond;
-    rgrowth_ = common_.rgrowth;
-    pattern_ap_.assign(ap, ap + n_ + 1);
-    pattern_ai_.assign(ai, ai + A.nonZeros());
-    if (reuse_) source_.assign(ax, ax + A.nonZeros());
+    if (reuse_) {  // what a later refactorization is compared with
+      klu_rcond(symbolic_, numeric_, &common_);
+      klu_rgrowth(ap, ai, ax, symbolic_, numeric_, &common_);
+      rcond_ = common_.rcond;
+      rgrowth_ = common_.rgrowth;
+      pattern_ap_.assign(ap, ap + n_ + 1);
+      pattern_ai_.assign(ai, ai + A.nonZeros());
+      source_.assign(ax, ax + A.nonZeros());
+    }
     return true;
   }
   void solve(const VecX& b, VecX& x) const override {
@@ -153,6 +153,13 @@ class KluBackend final : public detail::KktBackend {
   }
 
  private:
+  // KLU reads the compressed column arrays: an uncompressed matrix is copied
+  const SpMat& compressed(const SpMat& A) {
+    if (A.isCompressed()) return A;
+    copy_ = A;
+    copy_.makeCompressed();
+    return copy_;
+  }
   bool same_pattern(const SpMat& A) const {
     return A.rows() == n_ && static_cast<std::size_t>(A.nonZeros()) == pattern_ai_.size() &&
            std::equal(pattern_ap_.begin(), pattern_ap_.end(), A.outerIndexPtr()) &&
@@ -173,6 +180,7 @@ class KluBackend final : public detail::KktBackend {
   double rcond_ = 0.0, rgrowth_ = 0.0;  // of the last pivoting factorization
   std::vector<int> pattern_ap_, pattern_ai_;
   std::vector<double> source_;  // the values of the last pivoting factorization (with reuse_)
+  SpMat copy_;                  // a compressed copy of an uncompressed matrix
   bool reuse_ = false, reused_ = false;
   int refactorizations_ = 0;
 };
