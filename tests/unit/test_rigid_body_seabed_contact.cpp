@@ -248,3 +248,37 @@ bodies:
     EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
   EXPECT_EQ(std::find(names.begin(), names.end(), "clump.seabed.p3.force"), names.end());
 }
+
+// environment.seabed.lines: absent, every beam touches the seabed; a list, only those listed;
+// an empty list, none (a seabed for rigid-body points alone)
+TEST(RigidBodySeabedContact, LinesListSelectsTheBeams) {
+  const auto model = [](const std::string& lines) {
+    return io::load_model_text(R"(
+environment:
+  water: {density: 1025, depth: 100}
+  seabed:
+    normal_stiffness: 2.0e5
+)" + lines + R"(
+    points:
+      - {body: clump, points: [[0, 0, -0.5]], area: 1.5}
+bodies:
+  clump: {type: rigid_body, mass: 8000, inertia: [1000, 1000, 1500], position: [0, 0, -99]}
+  a: {type: ancf_beam, start: [0, 0, -99], end: [50, 0, -99], elements: 4,
+      outer_diameter: 0.1, youngs_modulus: 2e11, density: 7850}
+  b: {type: ancf_beam, start: [0, 5, -99], end: [50, 5, -99], elements: 4,
+      outer_diameter: 0.1, youngs_modulus: 2e11, density: 7850}
+)",
+                               "lines.yaml");
+  };
+  const auto touching = [](const io::Model& m) {
+    std::vector<std::string> names;
+    for (const auto& f : m.system->forces())
+      if (f->name() == "a.seabed" || f->name() == "b.seabed") names.push_back(f->name());
+    return names;
+  };
+  EXPECT_EQ(touching(model("")), (std::vector<std::string>{"a.seabed", "b.seabed"}));
+  EXPECT_EQ(touching(model("    lines: [b]")), (std::vector<std::string>{"b.seabed"}));
+  const io::Model none = model("    lines: []");
+  EXPECT_TRUE(touching(none).empty());
+  EXPECT_NE(contact_of(none, "clump.seabed"), nullptr);  // the points still touch it
+}

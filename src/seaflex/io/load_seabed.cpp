@@ -227,7 +227,9 @@ void load_seabed(MapReader& env, LoadContext& ctx) {
   p.gauss_points = r.integer("gauss_points", Need::kOptional, 1, 20).value_or(5);
   std::vector<std::string> lines;
   bool lines_ok = true;
+  bool lines_given = false;  // absent: every beam; a list (even empty): those listed
   if (const YAML::Node l = r.get("lines"); l.IsDefined()) {
+    lines_given = true;
     if (!l.IsSequence()) {
       r.error("lines", "expected a list of beam names");
       lines_ok = false;
@@ -300,7 +302,7 @@ void load_seabed(MapReader& env, LoadContext& ctx) {
       }
     });
   // the lines touch it once every body and its hydrodynamics are known
-  ctx.after_bodies.push_back([seabed, p, lines, mark, path](LoadContext& c) {
+  ctx.after_bodies.push_back([seabed, p, lines, lines_given, mark, path](LoadContext& c) {
     std::vector<std::string> beams;
     for (const auto& b : c.system.bodies())
       if (dynamic_cast<const AncfBeam*>(b.get())) beams.push_back(b->name());
@@ -311,7 +313,7 @@ void load_seabed(MapReader& env, LoadContext& ctx) {
     for (const auto& b : c.system.bodies()) {
       const auto* beam = dynamic_cast<const AncfBeam*>(b.get());
       if (!beam ||
-          (!lines.empty() && std::find(lines.begin(), lines.end(), beam->name()) == lines.end()))
+          (lines_given && std::find(lines.begin(), lines.end(), beam->name()) == lines.end()))
         continue;
       // the contact width of each section: its outer diameter, or else its Morison diameter
       const MorisonBeam* morison = nullptr;
