@@ -126,6 +126,13 @@ void print_run(const SimulationReport& rep, const io::Model& model, const fs::pa
         "constraint violation {:.2e}\n",
         rep.steps, d.time_step, rep.end_time, progress.elapsed(), thread_note, rep.rows,
         rep.max_constraint_violation);
+  if (rep.floor_steps_above_tolerance > 0)
+    fmt::print(
+        "warning: {} step{} at the smallest time step ({:g} s) kept an estimated local error "
+        "above error_tolerance (up to {:.3g} times it, below the 0.01 x (1 + |q|) at which a "
+        "step fails): lower min_time_step for these instants to meet the tolerance\n",
+        rep.floor_steps_above_tolerance, rep.floor_steps_above_tolerance == 1 ? "" : "s",
+        rep.min_step, rep.floor_worst_error);
   fmt::print("wrote {}\n", analysis::ResultFiles::describe(model, dir, "timeseries"));
   fmt::print("{}", design_summary);
 }

@@ -241,6 +241,7 @@ py::dict report_dict(const SimulationReport& r) {
   py::dict d;
   d["steps"] = r.steps;
   d["rejected_steps"] = r.rejected_steps;
+  d["floor_steps_above_tolerance"] = r.floor_steps_above_tolerance;
   d["iterations"] = r.iterations;
   d["rows"] = r.rows;
   d["end_time"] = r.end_time;

@@ -10,6 +10,7 @@ Usage: test_snap_load.py SEAFLEX_EXECUTABLE SOURCE_DIR"""
 import csv
 import math
 import os
+import re
 import sys
 import unittest
 
@@ -87,6 +88,25 @@ class SnapLoad(TempDirCase):
                       "min_time_step (at the smallest time step, 0.1 s)", r.stderr)
         self.assertAlmostEqual(rows[-1]["time"], 1.0, places=9)
         self.assertLess(max(x["weight.z"] for x in rows), -4.99)
+
+    def test_steps_above_the_tolerance_at_the_smallest_step_are_reported(self):
+        # halving stops at min_time_step 0.0125 s: the impact's steps there keep an error
+        # estimate above error_tolerance (but below the 1 % at which a step fails), so the run
+        # completes and says how many and how large; the default floor (h / 1024) resolves
+        # the impact and prints no warning
+        r, _ = self.run_model("generalized_alpha", ", step_control: adaptive, min_time_step: 0.0125")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        m = re.search(r"warning: (\d+) steps at the smallest time step \(0\.0125 s\) kept an "
+                      r"estimated local error above error_tolerance \(up to ([0-9.e+]+) times it",
+                      r.stdout)
+        self.assertIsNotNone(m, r.stdout)
+        self.assertGreater(int(m.group(1)), 0)
+        # above the tolerance, below the failure limit 0.01 (1 + |q|) / (1e-6 (1 + |q|))
+        self.assertGreater(float(m.group(2)), 1.0)
+        self.assertLess(float(m.group(2)), 1e4)
+        r, _ = self.run_model("generalized_alpha", ", step_control: adaptive")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertNotIn("warning:", r.stdout)
 
     def test_error_tolerance_input(self):
         path = self.model(MODEL.format(integrator="generalized_alpha",

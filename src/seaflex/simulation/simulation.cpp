@@ -81,6 +81,8 @@ void SimulationPosition::save(CheckpointWriter& out) const {
   out.put("sim.steps", report.steps);
   out.put("sim.rejected_steps", report.rejected_steps);
   out.put("sim.inaccurate_steps", report.inaccurate_steps);
+  out.put("sim.floor_steps_above_tolerance", report.floor_steps_above_tolerance);
+  out.put("sim.floor_worst_error", report.floor_worst_error);
   out.put("sim.iterations", report.iterations);
   out.put("sim.max_constraint_violation", report.max_constraint_violation);
   out.put("sim.min_step", report.min_step);
@@ -99,6 +101,11 @@ SimulationPosition SimulationPosition::load(const CheckpointReader& in) {
   // absent from checkpoints written before issue 22
   if (in.has("sim.inaccurate_steps"))
     p.report.inaccurate_steps = in.integer("sim.inaccurate_steps");
+  // absent from checkpoints written before 2026-11-27
+  if (in.has("sim.floor_steps_above_tolerance")) {
+    p.report.floor_steps_above_tolerance = in.integer("sim.floor_steps_above_tolerance");
+    p.report.floor_worst_error = in.number("sim.floor_worst_error");
+  }
   p.report.iterations = in.integer("sim.iterations");
   p.report.max_constraint_violation = in.number("sim.max_constraint_violation");
   p.report.min_step = in.number("sim.min_step");
@@ -185,8 +192,9 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
         }
       }
       // the step's accuracy: the local error estimate against the tolerance (file header)
-      int shrink = 1;           // halvings for a retry
-      bool inaccurate = false;  // rejected by the error estimate
+      int shrink = 1;            // halvings for a retry
+      bool inaccurate = false;   // rejected by the error estimate
+      double floor_error = 0.0;  // the error estimate of a step taken above it at the floor
       // fixed steps: a step whose own error estimate is a sizeable part of the motion (an
       // impact taken in one step) is wrong, however well Newton converged. Not for RK4: a
       // step that long is far above its stability limit, which the divergence test and the
@@ -221,6 +229,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
         // equilibrium (a riser started straight) excites modes no step resolves, which
         // generalized-alpha damps and the estimate still sees
         const bool at_floor = level >= levels_;
+        floor_error = at_floor && !(err <= 1.0) ? err : 0.0;
         if (!(err <= 1.0) &&
             !(at_floor && err * settings_.error_tolerance <= kFixedStepErrorLimit)) {
           inaccurate = true;
@@ -258,6 +267,10 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
       state.t = t_new;
       ticks += step_ticks;
       ++report.steps;
+      if (floor_error > 0.0) {  // accepted at the smallest step above the tolerance: reported
+        ++report.floor_steps_above_tolerance;
+        report.floor_worst_error = std::max(report.floor_worst_error, floor_error);
+      }
       report.iterations += step.iterations;
       report.min_step = std::min(report.min_step, h);
       report.max_constraint_violation = std::max(report.max_constraint_violation, step.residual);

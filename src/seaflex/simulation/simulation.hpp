@@ -48,7 +48,12 @@ struct SimulationReport {
   long steps = 0;             ///< accepted steps
   long rejected_steps = 0;    ///< failed or inaccurate steps retried with a smaller step (adaptive)
   long inaccurate_steps = 0;  ///< of these, the steps whose error estimate was too large
-  long iterations = 0;        ///< Newton iterations (or stages) of the accepted steps
+  /// steps taken at the smallest time step (adaptive) although their error estimate was
+  /// above error_tolerance (below the fixed-step limit), and the largest such estimate in
+  /// units of error_tolerance x (1 + |q|)
+  long floor_steps_above_tolerance = 0;
+  double floor_worst_error = 0.0;
+  long iterations = 0;  ///< Newton iterations (or stages) of the accepted steps
   long rows = 0;
   double end_time = 0.0;
   double max_constraint_violation = 0.0;
