@@ -1,6 +1,7 @@
 #include "seaflex/elements/ancf_cable_elastic.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "seaflex/math/gauss_legendre.hpp"
@@ -77,10 +78,6 @@ CableElasticity::CableElasticity(double l, double EA, double EI, AxialModel axia
     w_.push_back(rule.weights[k] * l);
     ds_.push_back(shape_dx(rule.points[k], l));
     dds_.push_back(shape_dxx(rule.points[k], l));
-    for (int i = 0; i < 4; ++i) {
-      ds_cols_.push_back(ds_.back()[i]);
-      dds_cols_.push_back(dds_.back()[i]);
-    }
   }
   B1_ = axial_matrix(l);
   B2_ = bending_matrix(l);
@@ -102,7 +99,9 @@ double CableElasticity::add_exact_forces(const Vec12& e, Vec12& Q, int power) co
   // and add_bending_power with f = N u, N = g h - p^2, u = g^-n
   using M3G = Eigen::Matrix<double, 3, G>;
   using RowG = Eigen::Array<double, 1, G>;
-  const Eigen::Map<const Eigen::Matrix<double, 4, G>> ds(ds_cols_.data()), dds(dds_cols_.data());
+  // ds_ and dds_ hold the points' Vec4 contiguously: 4 x G matrices, column k = point k
+  const Eigen::Map<const Eigen::Matrix<double, 4, G>> ds(ds_.front().data()),
+      dds(dds_.front().data());
   const Eigen::Map<const RowG> w(w_.data());
   const Mat34 R = relative_nodes(e);
   const M3G a = R * ds;   // r' at the points
@@ -132,24 +131,19 @@ double CableElasticity::add_forces(const Vec12& e, Vec12& Q, Mat12* K) const {
   if (!K && axial_ == AxialModel::kExact &&
       (bending_ == BendingModel::kExact || bending_ == BendingModel::kExactDeformed)) {
     const int power = bending_ == BendingModel::kExact ? 2 : 3;
-    switch (w_.size()) {
-      case 2:
-        return add_exact_forces<2>(e, Q, power);
-      case 3:
-        return add_exact_forces<3>(e, Q, power);
-      case 4:
-        return add_exact_forces<4>(e, Q, power);
-      case 5:
-        return add_exact_forces<5>(e, Q, power);
-      case 6:
-        return add_exact_forces<6>(e, Q, power);
-      case 7:
-        return add_exact_forces<7>(e, Q, power);
-      case 8:
-        return add_exact_forces<8>(e, Q, power);
-      default:
-        break;
-    }
+    // the fused path for 2 to 8 points, each size compiled on its own
+    using Fused = double (CableElasticity::*)(const Vec12&, Vec12&, int) const;
+    static constexpr Fused kFused[] = {nullptr,
+                                       nullptr,
+                                       &CableElasticity::add_exact_forces<2>,
+                                       &CableElasticity::add_exact_forces<3>,
+                                       &CableElasticity::add_exact_forces<4>,
+                                       &CableElasticity::add_exact_forces<5>,
+                                       &CableElasticity::add_exact_forces<6>,
+                                       &CableElasticity::add_exact_forces<7>,
+                                       &CableElasticity::add_exact_forces<8>};
+    if (w_.size() < std::size(kFused) && kFused[w_.size()])
+      return (this->*kFused[w_.size()])(e, Q, power);
   }
   double U = 0.0;
   switch (axial_) {

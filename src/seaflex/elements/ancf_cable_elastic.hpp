@@ -111,8 +111,6 @@ class CableElasticity {
   std::vector<double> w_;            // quadrature weights times l (integrate over x)
   std::vector<Vec4> ds_;             // s_i' at the quadrature points
   std::vector<Vec4> dds_;            // s_i'' at the quadrature points
-  std::vector<double> ds_cols_;      // 4 x G, column k = s' at point k (add_exact_forces)
-  std::vector<double> dds_cols_;     // 4 x G, column k = s'' at point k
   Mat4 B1_;                          // int s_i' s_j' dx
   Mat4 B2_;                          // int s_i'' s_j'' dx
   Eigen::Matrix<double, 16, 16> D_;  // D(4i+j, 4k+m) = int s_i' s_j' s_k' s_m' dx

@@ -148,8 +148,7 @@ class KluBackend final : public detail::KktBackend {
   int reused_pivots() const override { return refactorizations_; }
   void set_reuse_pivots(bool on) override { reuse_ = on; }
   const std::vector<double>& pivot_source() const override {
-    static const std::vector<double> none;
-    return reused_ ? source_ : none;
+    return reused_ ? source_ : KktBackend::pivot_source();
   }
 
  private:
