@@ -9,7 +9,10 @@ ramp included) at several time steps and a reference at a smaller step, and tabu
 against the reference, with the wall time of each run (one thread).
     /usr/bin/python3 bench/storm/step_study.py SEAFLEX [--duration 630]
         [--steps 0.4 0.2 0.1 0.05] [--reference 0.025] [--kinematics grid]
-        [--reference-kinematics exact] [--elements 100]
+        [--reference-kinematics exact] [--elements 100] [--work DIR]
+--kinematics (and --reference-kinematics) is `exact`, `grid`, or `grid:ds=0.5,dt=0.2` for
+a grid with other spacings (environment.waves.grid). With --work DIR the runs are kept in
+DIR and a run whose results are already there is not made again (e.g. the exact reference).
 Every run writes its rows at the same times, every --output s (default 0.4 s, a multiple
 of every step), so the maxima are taken over the same samples whatever the step."""
 import argparse
@@ -32,7 +35,13 @@ RAMP = 30.0
 
 
 def variant(n, kinematics, duration, step, output):
-    text = storm_model(n, 200, kinematics, duration, "csv", RAO)
+    kind, _, spacing = kinematics.partition(":")
+    text = storm_model(n, 200, kind, duration, "csv", RAO)
+    if spacing:
+        grid = ", ".join(f"{k}: {v}" for k, v in (kv.split("=") for kv in spacing.split(",")))
+        text, k = re.subn(r"\n    kinematics: grid[^\n]*\n",
+                          f"\n    kinematics: grid\n    grid: {{{grid}}}\n", text)
+        assert k == 1
     text, k = re.subn(r"\n  time_step: [0-9.]+\n", f"\n  time_step: {step:.12g}\n", text)
     assert k == 1
     text, k = re.subn(r"\n  output_interval: [0-9.]+\n", f"\n  output_interval: {output:g}\n",
@@ -48,6 +57,9 @@ def run(seaflex, text, folder, name):
     path = pathlib.Path(folder) / f"{name}.yaml"
     path.write_text(text)
     out = pathlib.Path(folder) / name
+    done = out / "step_study.done"  # written after a run that finished
+    if done.exists():
+        return dict(statistics(out), wall=float("nan"), summary="(kept from an earlier run)")
     t0 = time.time()
     res = subprocess.run([seaflex, "run", str(path), "-o", str(out)], capture_output=True,
                          text=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
@@ -55,6 +67,7 @@ def run(seaflex, text, folder, name):
     summary = next((l for l in res.stdout.splitlines() if l.startswith("dynamics:")), "")
     if res.returncode != 0:
         return dict(failed=f"exit {res.returncode}: {res.stderr.strip()[-300:]}", wall=wall)
+    done.write_text(summary + "\n")
     return dict(statistics(out), wall=wall, summary=summary)
 
 
@@ -87,15 +100,20 @@ def main():
     p.add_argument("--kinematics", default="grid")
     p.add_argument("--reference-kinematics", default="exact")
     p.add_argument("--output", type=float, default=0.4)
+    p.add_argument("--work", help="keep the runs in this folder and reuse them")
     a = p.parse_args()
     res = {}
+    if a.work:
+        os.makedirs(a.work, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
+        tmp = a.work or tmp
         runs = [(h, a.kinematics) for h in a.steps] + [(a.reference, a.kinematics)]
         if a.reference_kinematics != a.kinematics:
             runs.append((a.reference, a.reference_kinematics))
         for h, kin in runs:
             res[(h, kin)] = r = run(a.seaflex, variant(a.elements, kin, a.duration, h, a.output),
-                                    tmp, f"storm_{kin}_{h:g}")
+                                    tmp, f"storm_{kin.replace(':', '_').replace(',', '_').replace('=', '')}"
+                                    f"_{h:g}_{a.duration:g}_{a.elements}_{a.output:g}")
             print(f"# h = {h:g} s, {kin}: {r.get('failed') or r['summary']} "
                   f"({r['wall']:.1f} s wall)", flush=True)
     ref = res[(a.reference, a.reference_kinematics)]

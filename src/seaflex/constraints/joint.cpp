@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace seaflex {
@@ -156,10 +157,19 @@ void Joint::factor(Factor f, const State& state, PairVectorEval& out) const {
 }
 
 void Joint::evaluate(const State& state, ConstraintEval& out) const {
-  PairVectorEval u, w;
+  // each factor once, however many rows share it (a prismatic joint's 5 rows use 4 factors
+  // twice or more); the rows' values are the same products as before
+  std::array<PairVectorEval, kFactorCount> factors;
+  std::array<bool, kFactorCount> have{};
+  auto get = [&](Factor f) -> const PairVectorEval& {
+    const auto i = static_cast<std::size_t>(f);
+    if (!have[i]) factor(f, state, factors[i]);
+    have[i] = true;
+    return factors[i];
+  };
   for (std::size_t r = 0; r < rows_.size(); ++r) {
-    factor(rows_[r].u, state, u);
-    factor(rows_[r].w, state, w);
+    const PairVectorEval& u = get(rows_[r].u);
+    const PairVectorEval& w = get(rows_[r].w);
     // C = u . w;  C_q = u^T J_w + w^T J_u;  C_t = u . w_t + w . u_t (moving markers);
     // eq. (133): gamma = -(u . w_bias + w . u_bias + 2 u' . w'), with x'' = J q'' + bias
     // for each factor (bias holds x_tt and rate holds x_t of a moving marker, so the

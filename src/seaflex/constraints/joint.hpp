@@ -81,6 +81,8 @@ class Joint : public Constraint {
     kSeparation,
     kSlopeDifference
   };
+  static constexpr std::size_t kFactorCount = 11;  // the Factors above
+  static_assert(static_cast<std::size_t>(Factor::kSlopeDifference) + 1 == kFactorCount);
   struct Row {
     Factor u;  // never depends on the "to" marker
     Factor w;

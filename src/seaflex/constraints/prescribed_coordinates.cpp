@@ -27,7 +27,7 @@ std::vector<Index> PrescribedCoordinates::coordinates() const {
 }
 
 void PrescribedCoordinates::evaluate(const State& state, ConstraintEval& out) const {
-  const MotionPose pose = compute_motion_pose(motion_->sample(state.t));
+  const MotionPose pose = motion_->pose(state.t);
   out.Cq.setZero();
   for (std::size_t i = 0; i < rows_.size(); ++i) {
     const Row& r = rows_[i];

@@ -187,13 +187,21 @@ const std::vector<double>& WaveGrid::station_phasors(std::int64_t m) const {
   return it->second;
 }
 
+void WaveGrid::recycle(Slot& slot) const {
+  stored_ -= static_cast<std::int64_t>(slot.columns.size());
+  for (auto& kv : slot.columns) {
+    if (spare_.size() >= kSpareColumns) break;
+    spare_.push_back(std::move(kv.second));
+  }
+  slot.columns.clear();
+}
+
 WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
   Slot& slot = slot_of(n);
   const auto& comps = comps_;
   const std::size_t N = comps.size();
   if (slot.n != n) {
-    stored_ -= static_cast<std::int64_t>(slot.columns.size());
-    slot.columns.clear();
+    recycle(slot);
     slot.n = n;
     ++generation_;
     // the time phasors of t_n: N sines and cosines per time sample, shared by its stations
@@ -208,6 +216,11 @@ WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
   auto [it, inserted] = slot.columns.try_emplace(m);
   Column& col = it->second;
   if (!inserted) return col;
+  if (!spare_.empty()) {  // its vectors keep their sizes: resize and assign below are cheap
+    col = std::move(spare_.back());
+    spare_.pop_back();
+    col.eta = 0.0;
+  }
   // the elevation and the coefficients at (s_m, t_n): theta = (w t_n + phase) - k s_m, so
   // cos theta = cos A cos B + sin A sin B, sin theta = sin A cos B - cos A sin B with
   // A = w t_n + phase (the slot's phasors) and B = k s_m (the station's)
@@ -295,6 +308,8 @@ const std::array<WaveGrid::Column*, 16>* WaveGrid::stencil(std::int64_t m0, std:
         slot.n = INT64_MIN;
         ++generation_;
       }
+    spare_.clear();
+    spare_.shrink_to_fit();
     if (stored_after() > max_columns_) return nullptr;
   }
   StencilCache& cache = t_cache_;

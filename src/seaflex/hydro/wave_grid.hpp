@@ -140,6 +140,11 @@ class WaveGrid {
   // again): 4096, or fewer so that they take at most an eighth of spec.max_bytes.
   const std::vector<double>& station_phasors(std::int64_t m) const;
   static constexpr int kSlots = 64;
+  // columns of recycled slots, kept to be filled again without allocating or zeroing their
+  // coefficients (at most kSpareColumns; emptied with the slots when over the memory cap)
+  static constexpr std::size_t kSpareColumns = 64;
+  // empties a slot whose time is over, keeping its columns as spares; caller holds mutex_
+  void recycle(Slot& slot) const;
 
   // the column (m, n), with its elevation and coefficients; caller holds mutex_
   Column& column(std::int64_t m, std::int64_t n) const;
@@ -213,6 +218,7 @@ class WaveGrid {
   mutable std::vector<Slot> slots_;
   mutable std::unordered_map<std::int64_t, std::vector<double>> station_phasors_;
   mutable std::int64_t started_ = 0, blocks_ = 0, stored_ = 0;
+  mutable std::vector<Column> spare_;  // recycled columns (caller holds mutex_)
   std::int64_t max_columns_ = 0;
   std::size_t max_station_phasors_ = 4096;
   mutable std::uint64_t generation_ = 0;  // counts slot clearings (they free columns)

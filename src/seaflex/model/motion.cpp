@@ -1,6 +1,8 @@
 #include "seaflex/model/motion.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -41,6 +43,36 @@ MotionPose compute_motion_pose(const MotionSample& s) {
   pose.R_tt = A.F_tt * B.F * C.F + A.F * B.F_tt * C.F + A.F * B.F * C.F_tt +
               2.0 * (A.F_t * B.F_t * C.F + A.F_t * B.F * C.F_t + A.F * B.F_t * C.F_t);
   return pose;
+}
+
+namespace {
+std::uint64_t next_motion_id() {
+  static std::atomic<std::uint64_t> next{1};
+  return next.fetch_add(1, std::memory_order_relaxed);
+}
+}  // namespace
+
+Motion::Motion() : id_(next_motion_id()) {}
+Motion::Motion(const Motion&) : id_(next_motion_id()) {}
+Motion& Motion::operator=(const Motion&) { return *this; }
+
+MotionPose Motion::pose(double t) const {
+  // a few entries per thread, replaced in turn (ids start at 1: an empty entry never matches)
+  struct Entry {
+    std::uint64_t id = 0;
+    double t = 0.0;
+    MotionPose pose;
+  };
+  thread_local std::array<Entry, 4> cache;
+  thread_local std::size_t next = 0;
+  for (const Entry& e : cache)
+    if (e.id == id_ && e.t == t) return e.pose;
+  Entry& e = cache[next];
+  next = (next + 1) % cache.size();
+  e.pose = compute_motion_pose(sample(t));
+  e.id = id_;
+  e.t = t;
+  return e.pose;
 }
 
 MovingVector displaced_point(const MotionPose& pose, const Vec3& origin, const Vec3& p0) {

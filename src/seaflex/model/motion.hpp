@@ -15,6 +15,7 @@
 // a motion so that it starts from rest with zero displacement, velocity and acceleration.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include "seaflex/core/types.hpp"
@@ -30,13 +31,6 @@ struct MotionSample {
   Vec6 x_tt = Vec6::Zero();
 };
 
-/// A pure function of time t (s).
-class Motion {
- public:
-  virtual ~Motion() = default;
-  virtual MotionSample sample(double t) const = 0;
-};
-
 /// Pose of the displaced frame and its time derivatives: translation p of the origin and
 /// rotation R.
 struct MotionPose {
@@ -46,6 +40,23 @@ struct MotionPose {
 
 /// The pose of a sample (chain rule on R = Rz(yaw) Ry(pitch) Rx(roll)).
 MotionPose compute_motion_pose(const MotionSample& s);
+
+/// A pure function of time t (s).
+class Motion {
+ public:
+  Motion();
+  Motion(const Motion&);             // a copy is another motion: its own id
+  Motion& operator=(const Motion&);  // keeps its id
+  virtual ~Motion() = default;
+  virtual MotionSample sample(double t) const = 0;
+  /// compute_motion_pose(sample(t)), computed once per thread for the last few (motion, t)
+  /// asked for: the markers and constraints on one vessel all ask at the same t, several
+  /// times per Newton iteration (a pure function of t: the same value, bit for bit).
+  MotionPose pose(double t) const;
+
+ private:
+  std::uint64_t id_;  // unique per object of the run (the cache's key; never reused)
+};
 
 /// A point p0 (at rest) of the frame displaced about origin o: value, first and second
 /// time derivatives.

@@ -14,7 +14,7 @@ std::string MovingMarker::describe() const {
 }
 
 void MovingMarker::evaluate(MarkerVector which, const State& state, MarkerVectorEval& out) const {
-  const MotionPose pose = compute_motion_pose(motion_->sample(state.t));
+  const MotionPose pose = motion_->pose(state.t);
   const int k = static_cast<int>(which);
   const MovingVector m = k == 0 ? displaced_point(pose, origin_, position_)
                                 : displaced_axis(pose, Vec3(frame_.col(k - 1)));
