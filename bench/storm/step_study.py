@@ -10,8 +10,9 @@ against the reference, with the wall time of each run (one thread).
     /usr/bin/python3 bench/storm/step_study.py SEAFLEX [--duration 630]
         [--steps 0.4 0.2 0.1 0.05] [--reference 0.025] [--kinematics grid]
         [--reference-kinematics exact] [--elements 100] [--work DIR]
---kinematics (and --reference-kinematics) is `exact`, `grid`, or `grid:ds=0.5,dt=0.2` for
-a grid with other spacings (environment.waves.grid). With --work DIR the runs are kept in
+--kinematics (and --reference-kinematics) is `exact`, `grid` (the storm files' spacings,
+ds 0.5 m and dt 0.2 s), or e.g. `grid:ds=0.25,dt=0.1` for other spacings (the other keys of
+environment.waves.grid keep their defaults). With --work DIR the runs are kept in
 DIR and a run whose results are already there is not made again (e.g. the exact reference).
 Every run writes its rows at the same times, every --output s (default 0.4 s, a multiple
 of every step), so the maxima are taken over the same samples whatever the step."""
@@ -39,6 +40,7 @@ def variant(n, kinematics, duration, step, output):
     text = storm_model(n, 200, kind, duration, "csv", RAO)
     if spacing:
         grid = ", ".join(f"{k}: {v}" for k, v in (kv.split("=") for kv in spacing.split(",")))
+        text = re.sub(r"\n    grid: \{[^\n]*", "", text)  # the storm file's own spacings
         text, k = re.subn(r"\n    kinematics: grid[^\n]*\n",
                           f"\n    kinematics: grid\n    grid: {{{grid}}}\n", text)
         assert k == 1

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "seaflex/constraints/joint.hpp"
 #include "seaflex/constraints/prescribed_coordinates.hpp"
@@ -48,6 +49,41 @@ TEST(Motion, PoseDerivativesMatchFiniteDifferences) {
     EXPECT_LT((p.R_tt - (b.R_t - a.R_t) / (2 * h)).norm(), 1e-8);
     EXPECT_LT((p.p_t - (b.p - a.p) / (2 * h)).norm(), 1e-8);
     EXPECT_LT((p.p_tt - (b.p_t - a.p_t) / (2 * h)).norm(), 1e-8);
+  }
+}
+
+// Motion::pose remembers the last few (motion, t) per thread: it must give every motion its own
+// pose, bit for bit compute_motion_pose(sample(t)), however the calls interleave: six motions
+// (more than the cache's four entries) asked in turn at repeated and new times, a copy of a
+// motion (its own identity), and motions made after others were destroyed (a new object at a
+// freed address must not find the old one's entry)
+TEST(Motion, CachedPoseEqualsTheComputedOne) {
+  auto expect_same = [](const MotionPose& a, const MotionPose& b) {
+    EXPECT_EQ(a.p, b.p);
+    EXPECT_EQ(a.p_t, b.p_t);
+    EXPECT_EQ(a.p_tt, b.p_tt);
+    EXPECT_EQ(a.R, b.R);
+    EXPECT_EQ(a.R_t, b.R_t);
+    EXPECT_EQ(a.R_tt, b.R_tt);
+  };
+  std::vector<std::shared_ptr<const Motion>> motions;
+  for (int i = 0; i < 6; ++i)
+    motions.push_back(std::make_shared<HarmonicMotion>(
+        six(1.0 + i, -0.5, 2.0, 0.4, -0.3 * i, 0.8), six(7.0, 5.0, 9.0 + i, 6.0, 8.0, 11.0),
+        six(0.1 * i, 0.2, 0.3, 0.4, 0.5, 0.6)));
+  for (int round = 0; round < 3; ++round)
+    for (double t : {0.5, 0.5, 1.25, 0.5})
+      for (const auto& m : motions) expect_same(m->pose(t), compute_motion_pose(m->sample(t)));
+  const HarmonicMotion original(six(1, 2, 3, 0.1, 0.2, 0.3), six(5, 6, 7, 8, 9, 10),
+                                six(0, 0, 0, 0, 0, 0));
+  HarmonicMotion copy = original;
+  expect_same(copy.pose(2.0), compute_motion_pose(original.sample(2.0)));
+  copy = HarmonicMotion(six(3, 2, 1, 0.3, 0.2, 0.1), six(5, 6, 7, 8, 9, 10), six(1, 1, 1, 1, 1, 1));
+  expect_same(copy.pose(2.0), compute_motion_pose(copy.sample(2.0)));
+  for (int i = 0; i < 20; ++i) {
+    auto m = std::make_shared<HarmonicMotion>(six(0.1 * i, 0, 0, 0, 0, 0.01 * i),
+                                              six(3, 3, 3, 3, 3, 3), six(0, 0, 0, 0, 0, 0));
+    expect_same(m->pose(1.0), compute_motion_pose(m->sample(1.0)));
   }
 }
 

@@ -54,7 +54,10 @@ std::uint64_t next_motion_id() {
 
 Motion::Motion() : id_(next_motion_id()) {}
 Motion::Motion(const Motion&) : id_(next_motion_id()) {}
-Motion& Motion::operator=(const Motion&) { return *this; }
+Motion& Motion::operator=(const Motion&) {
+  id_ = next_motion_id();  // other values: no longer the motion the cache knew
+  return *this;
+}
 
 MotionPose Motion::pose(double t) const {
   // a few entries per thread, replaced in turn (ids start at 1: an empty entry never matches)

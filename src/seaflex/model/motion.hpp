@@ -46,7 +46,7 @@ class Motion {
  public:
   Motion();
   Motion(const Motion&);             // a copy is another motion: its own id
-  Motion& operator=(const Motion&);  // keeps its id
+  Motion& operator=(const Motion&);  // and so is an assigned one
   virtual ~Motion() = default;
   virtual MotionSample sample(double t) const = 0;
   /// compute_motion_pose(sample(t)), computed once per thread for the last few (motion, t)
