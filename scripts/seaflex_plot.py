@@ -11,6 +11,8 @@ DIR/plots/:
                         with the envelope (min and max over the run) of each node
   tensions.png          every <name>.tension channel (ropes and springs)
   cylinders.png         stroke, pressure and force of every pneumatic cylinder
+  tensioners.png        stroke and tension of every constant-tension tensioner
+                        (connections type: tensioner)
   joint_forces.png      the resultant force of every joint (at a riser's end joint: the
                         riser's effective tension there)
   range_<beam>.png      range graphs from <beam>.envelope.csv: min, max and mean over the
@@ -190,6 +192,22 @@ def report(header, cols, out, snapshots, written):
         axes[-1].set_xlabel("time (s)")
         fig.suptitle("pneumatic cylinders")
         save(fig, os.path.join(out, "cylinders.png"), written)
+    # constant-tension tensioners: a stroke and a tension, no gas pressure
+    tens = sorted(h[: -len(".stroke")] for h in header
+                  if h.endswith(".stroke") and h[: -len(".stroke")] + ".tension" in header
+                  and h[: -len(".stroke")] + ".pressure" not in header)
+    if tens:
+        fig, axes = plt.subplots(2, 1, figsize=(10, 7), sharex=True)
+        for name in tens:
+            axes[0].plot(t, cols[name + ".stroke"], lw=1, label=name)
+            axes[1].plot(t, [v / 1e6 for v in cols[name + ".tension"]], lw=1, label=name)
+        for ax, label in zip(axes, ("stroke (m)", "tension (MN)")):
+            ax.set_ylabel(label)
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=8)
+        axes[-1].set_xlabel("time (s)")
+        fig.suptitle("tensioners (stroke from the length at the start; tension along the line)")
+        save(fig, os.path.join(out, "tensioners.png"), written)
     joints = sorted(h[: -len(".fx")] for h in header
                     if h.endswith(".fx") and h[: -len(".fx")] + ".fz" in header)
     series = []

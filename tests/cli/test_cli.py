@@ -465,6 +465,39 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertGreater(os.path.getsize(os.path.join(h5, "plots", "barge.x.png")), 10000)
 
+    def test_plot_draws_the_constant_tension_tensioner(self):
+        # the storm benchmark's riser (bench/storm) for its first 40 s: the constant-tension
+        # tensioner's stroke and tension get their own figure (tensioners.png), drawn from the
+        # channels tensioner.stroke and tensioner.tension; a pneumatic cylinder's (with a
+        # pressure channel) stays in cylinders.png
+        sys.path.insert(0, os.path.join(SRC, "bench", "storm"))
+        from make_storm import storm_model
+        text = storm_model(100, duration=40.0, fmt="csv",
+                           rao_csv=os.path.abspath(os.path.join(EXAMPLES, "drilling_rig_raos.csv")))
+        model = os.path.join(self.dir, "storm40.yaml")
+        with open(model, "w") as f:
+            f.write(text)
+        out = os.path.join(self.dir, "storm40")
+        r = run("run", model, "-o", out, "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        header, rows = read_csv(os.path.join(out, "timeseries.csv"))
+        stroke = [row[header.index("tensioner.stroke")] for row in rows]
+        tension = [row[header.index("tensioner.tension")] for row in rows]
+        self.assertGreater(max(stroke) - min(stroke), 1.0)  # the vessel heaves past the ramp
+        # inside the stroke limits the tension is the set tension, 6.875344 MN
+        for s_, t_ in zip(stroke, tension):
+            self.assertLess(abs(s_), 7.5)
+            self.assertAlmostEqual(t_ / 6.875344e6, 1.0, delta=1e-9)
+        r = run("plot", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("tensioners.png", r.stdout)
+        self.assertNotIn("cylinders.png", r.stdout)
+        path = os.path.join(out, "plots", "tensioners.png")
+        with open(path, "rb") as f:
+            head = f.read(24)
+        self.assertEqual(head[:8], b"\x89PNG\r\n\x1a\n")
+        self.assertGreater(os.path.getsize(path), 20000)  # not an empty canvas
+
     def test_riser_bows_with_the_current_in_statics(self):
         out = os.path.join(self.dir, "riser")
         r = run("statics", os.path.join(EXAMPLES, "riser_in_current.yaml"), "-o", out)
