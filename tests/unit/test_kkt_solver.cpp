@@ -247,6 +247,36 @@ TEST(KktSolver, NewPatternIsAnalyzedAgain) {
   }
 }
 
+// A new pattern of the same size and number of entries is analyzed again too: an upper
+// bidiagonal matrix (block triangular: three 1 x 1 blocks to KLU) and then a lower one, whose
+// entries below the diagonal the first analysis would leave outside its blocks.
+TEST(KktSolver, SameSizeOtherPositionsIsAnalyzedAgain) {
+  MatX U = MatX::Zero(3, 3), L = MatX::Zero(3, 3);
+  U << 2.0, 1.0, 0.0,  //
+      0.0, 3.0, 1.0,   //
+      0.0, 0.0, 4.0;
+  L << 2.0, 0.0, 0.0,  //
+      1.0, 3.0, 0.0,   //
+      0.0, 1.0, 4.0;
+  const SpMat Us = from_dense(U), Ls = from_dense(L);
+  ASSERT_EQ(Us.nonZeros(), Ls.nonZeros());
+  const VecX x_exact = (VecX(3) << 1.0, -2.0, 3.0).finished();
+  for (const LinearSolverKind kind : kKinds) {
+    SCOPED_TRACE(std::string(KktSolver::to_string(kind)));
+    for (const bool reuse : {false, true}) {
+      KktSolver solver(kind);
+      solver.set_reuse_pivots(reuse);
+      VecX x;
+      ASSERT_TRUE(solver.factorize(Us)) << solver.message();
+      solver.solve(U * x_exact, x);
+      EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-14);
+      ASSERT_TRUE(solver.factorize(Ls)) << solver.message();
+      solver.solve(L * x_exact, x);
+      EXPECT_LT((x - x_exact).lpNorm<Eigen::Infinity>(), 1e-14);
+    }
+  }
+}
+
 // Redundant constraints (two equal rows of C_q) and a coordinate without mass or
 // stiffness (an empty column): factorize returns false with a message, and the solver
 // recovers on a regular matrix of the same pattern.

@@ -245,17 +245,43 @@ KktSolver::~KktSolver() = default;
 KktSolver::KktSolver(KktSolver&&) noexcept = default;
 KktSolver& KktSolver::operator=(KktSolver&&) noexcept = default;
 
+namespace {
+// f applied to A's compressed form: A itself, or a compressed copy (rare: the assembled
+// matrices are compressed)
+template <class F>
+auto with_compressed(const SpMat& A, F f) {
+  if (A.isCompressed()) return f(A);
+  SpMat c = A;
+  c.makeCompressed();
+  return f(c);
+}
+}  // namespace
+
 bool KktSolver::analyze(const SpMat& A) {
   factorized_ = false;
   analyzed_ = backend_->analyze(A, message_);
   analyzed_rows_ = A.rows();
-  analyzed_nonzeros_ = A.nonZeros();
+  with_compressed(A, [&](const SpMat& c) {
+    analyzed_outer_.assign(c.outerIndexPtr(), c.outerIndexPtr() + c.outerSize() + 1);
+    analyzed_inner_.assign(c.innerIndexPtr(), c.innerIndexPtr() + c.nonZeros());
+    return 0;
+  });
   return analyzed_;
 }
 
+bool KktSolver::same_pattern(const SpMat& A) const {
+  return A.rows() == analyzed_rows_ && with_compressed(A, [&](const SpMat& c) {
+           return std::equal(analyzed_outer_.begin(), analyzed_outer_.end(), c.outerIndexPtr(),
+                             c.outerIndexPtr() + c.outerSize() + 1) &&
+                  std::equal(analyzed_inner_.begin(), analyzed_inner_.end(), c.innerIndexPtr(),
+                             c.innerIndexPtr() + c.nonZeros());
+         });
+}
+
 bool KktSolver::factorize(const SpMat& A) {
-  const bool new_pattern =
-      !analyzed_ || A.rows() != analyzed_rows_ || A.nonZeros() != analyzed_nonzeros_;
+  // compared entry by entry (O(nonzeros), far below a factorization): a pattern analyzed for
+  // other positions would leave entries outside KLU's blocks (a crash, not an error)
+  const bool new_pattern = !analyzed_ || !same_pattern(A);
   if (new_pattern && !analyze(A)) return false;
   ++factorizations_;
   factorized_ = backend_->factorize(A, message_);

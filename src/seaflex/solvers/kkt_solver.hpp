@@ -65,7 +65,8 @@ class KktSolver {
   KktSolver& operator=(const KktSolver&) = delete;
 
   /// Symbolic analysis (ordering) of A's sparsity pattern; factorize() calls it itself
-  /// the first time and whenever A's size or number of stored entries changes. Returns
+  /// the first time and whenever A's pattern changes (size, or the positions of its stored
+  /// entries). Returns
   /// false when the analysis fails; message() says why. A must be square.
   bool analyze(const SpMat& A);
   /// Factorizes A (analyzing its pattern when it is new). Returns false when A is
@@ -102,7 +103,10 @@ class KktSolver {
   std::unique_ptr<detail::KktBackend> backend_;
   bool analyzed_ = false;
   Index analyzed_rows_ = 0;
-  Index analyzed_nonzeros_ = 0;
+  // the analyzed pattern (compressed column starts and row indices): a matrix with another
+  // pattern is analyzed again, even with the same size and number of entries
+  std::vector<int> analyzed_outer_, analyzed_inner_;
+  bool same_pattern(const SpMat& A) const;
   bool factorized_ = false;
   int factorizations_ = 0;
   std::string message_;
