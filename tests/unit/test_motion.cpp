@@ -68,9 +68,9 @@ TEST(Motion, CachedPoseEqualsTheComputedOne) {
   };
   std::vector<std::shared_ptr<const Motion>> motions;
   for (int i = 0; i < 6; ++i)
-    motions.push_back(std::make_shared<HarmonicMotion>(
-        six(1.0 + i, -0.5, 2.0, 0.4, -0.3 * i, 0.8), six(7.0, 5.0, 9.0 + i, 6.0, 8.0, 11.0),
-        six(0.1 * i, 0.2, 0.3, 0.4, 0.5, 0.6)));
+    motions.push_back(std::make_shared<HarmonicMotion>(six(1.0 + i, -0.5, 2.0, 0.4, -0.3 * i, 0.8),
+                                                       six(7.0, 5.0, 9.0 + i, 6.0, 8.0, 11.0),
+                                                       six(0.1 * i, 0.2, 0.3, 0.4, 0.5, 0.6)));
   for (int round = 0; round < 3; ++round)
     for (double t : {0.5, 0.5, 1.25, 0.5})
       for (const auto& m : motions) expect_same(m->pose(t), compute_motion_pose(m->sample(t)));
