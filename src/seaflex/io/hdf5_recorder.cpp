@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "seaflex/core/output_file.hpp"
 #include "seaflex/post/envelope.hpp"
 
 namespace seaflex::io {
@@ -63,14 +64,19 @@ struct Hdf5Recorder::Impl {
   std::filesystem::path path;
   Handle file;
 
+  // a failure is an OutputError, as for the CSV files: exit code 3, "cannot write PATH: ..."
+  // (named once: after a failure the file takes no more writes, flush() included)
+  mutable bool failed = false;
   hid_t check(hid_t id, const char* what) const {
-    if (id < 0)
-      throw std::runtime_error(fmt::format("cannot write {}: HDF5 {} failed", path.string(), what));
+    if (id < 0) fail(what);
     return id;
   }
   void check_status(herr_t status, const char* what) const {
-    if (status < 0)
-      throw std::runtime_error(fmt::format("cannot write {}: HDF5 {} failed", path.string(), what));
+    if (status < 0) fail(what);
+  }
+  [[noreturn]] void fail(const char* what) const {
+    failed = true;
+    throw OutputError(path, fmt::format("HDF5 {} failed", what));
   }
 
   // creation properties of a group or dataset without modification times, so that the same
@@ -229,6 +235,12 @@ struct Hdf5Recorder::Impl {
 Hdf5Recorder::Hdf5Recorder(const std::filesystem::path& path, std::vector<post::BeamResults> beams,
                            bool per_row, bool envelope)
     : impl_(std::make_unique<Impl>()) {
+  // no HDF5 clean-up at exit (before the library's first use): a file whose writes failed (a
+  // full disk, a file size limit) cannot be closed, and the library's exit handler then
+  // crashed on it (H5F__close_cb, a segmentation fault after the error was reported). The
+  // rows flushed so far are on disk either way; a file closed normally is closed here.
+  static const bool no_atexit = H5dont_atexit() >= 0;
+  (void)no_atexit;
   impl_->path = path;
   impl_->pending = std::move(beams);
   impl_->per_row = per_row;
@@ -313,6 +325,7 @@ void Hdf5Recorder::record(const State& state, std::span<const double> values) {
 
 void Hdf5Recorder::flush() {
   Impl& m = *impl_;
+  if (m.failed) return;  // already reported; its rows up to the failure are on disk
   if (m.envelope) {
     for (auto& b : m.beams) {
       if (b.envelope.count() == 0) continue;
