@@ -48,7 +48,8 @@
 // 5 values instead of 16 columns x 4 levels x 5, and no lock. The sums are the same tensor
 // product as before, in another order (round-off only).
 // Columns live in a ring of 64 time slots (memory ~ 64 x stations visited x (5 N + 5 J)
-// doubles, a few MB for a riser); evaluations more than 60 dt apart recompute columns (a time
+// doubles, a few MB for a riser; a slot's columns are kept as spares for the next time,
+// at most 64 of them); evaluations more than 60 dt apart recompute columns (a time
 // loop's are not). Memory is capped at spec.max_bytes (256 MB): a point whose columns would
 // exceed it (a line kilometres long across the waves at a fine ds) gets the exact sum, so the
 // grid never makes a run fail or swap, only slower. Thread-safe: columns are read under a

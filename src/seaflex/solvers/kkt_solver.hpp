@@ -65,9 +65,9 @@ class KktSolver {
   KktSolver& operator=(const KktSolver&) = delete;
 
   /// Symbolic analysis (ordering) of A's sparsity pattern; factorize() calls it itself
-  /// the first time and whenever A's pattern changes (size, or the positions of its stored
-  /// entries). Returns
-  /// false when the analysis fails; message() says why. A must be square.
+  /// the first time and whenever A's pattern changes (its size, or the positions of its
+  /// stored entries). Returns false when the analysis fails; message() says why. A must be
+  /// square.
   bool analyze(const SpMat& A);
   /// Factorizes A (analyzing its pattern when it is new). Returns false when A is
   /// singular; message() says why.
