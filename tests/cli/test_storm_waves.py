@@ -133,8 +133,8 @@ def main(seaflex, source):
     else:
         kin, other = float(split.group(1)), float(split.group(2))
         # the estimate is a fraction of the assembly (about 0.6 in the first 20 s, which fill
-        # the grid's first columns): between 0 and the
-        # whole, with room for the sampling's noise under load
+        # the grid's first columns): between 0 and the whole, with room for the sampling's
+        # noise under load
         if not (kin > 0 and kin < 1.5 * float(asm.group(1)) and
                 abs(kin + other - float(asm.group(1))) <= 2e-3):
             failures.append("bench split %g + %g s against assembly %s s" % (kin, other, asm.group(1)))
