@@ -13,11 +13,13 @@ against the reference, with the wall time of each run (one thread).
 --kinematics (and --reference-kinematics) is `exact`, `grid` (the storm files' spacings,
 ds 0.5 m and dt 0.2 s), or e.g. `grid:ds=0.25,dt=0.1` for other spacings (the other keys of
 environment.waves.grid keep their defaults). With --work DIR the runs are kept in
-DIR and a run whose results are already there is not made again (e.g. the exact reference).
+DIR and a run of the same model text whose results are already there is not made again
+(e.g. the exact reference; a different binary is not noticed: use a fresh DIR then).
 Every run writes its rows at the same times, every --output s (default 0.4 s, a multiple
 of every step), so the maxima are taken over the same samples whatever the step."""
 import argparse
 import csv
+import hashlib
 import math
 import os
 import pathlib
@@ -59,8 +61,10 @@ def run(seaflex, text, folder, name):
     path = pathlib.Path(folder) / f"{name}.yaml"
     path.write_text(text)
     out = pathlib.Path(folder) / name
-    done = out / "step_study.done"  # written after a run that finished
-    if done.exists():
+    # written after a run that finished, with the model's digest: kept only for the same model
+    done = out / "step_study.done"
+    digest = hashlib.sha256(text.encode()).hexdigest()
+    if done.exists() and done.read_text().split("\n")[0] == digest:
         return dict(statistics(out), wall=float("nan"), summary="(kept from an earlier run)")
     t0 = time.time()
     res = subprocess.run([seaflex, "run", str(path), "-o", str(out)], capture_output=True,
@@ -69,7 +73,7 @@ def run(seaflex, text, folder, name):
     summary = next((l for l in res.stdout.splitlines() if l.startswith("dynamics:")), "")
     if res.returncode != 0:
         return dict(failed=f"exit {res.returncode}: {res.stderr.strip()[-300:]}", wall=wall)
-    done.write_text(summary + "\n")
+    done.write_text(digest + "\n" + summary + "\n")
     return dict(statistics(out), wall=wall, summary=summary)
 
 
