@@ -121,7 +121,7 @@ TEST(WaveGrid, MatchesExactSumBetweenNodesWithStretching) {
 // carries the energy. Documented: 1e-3 of the RMS velocity, elevation and pressure and 3e-3 of
 // the RMS acceleration (which weights the short components by w^2). Measured: eta 4.8e-4,
 // velocity 6.4e-4, acceleration 1.7e-3, pressure 1.9e-4 (with ds 1 m and dt 0.4 s: velocity
-// 1.2e-2, acceleration 2.4e-2, which is why the files do not go coarser).
+// 1.2e-2, acceleration 2.7e-2, which is why the files do not go coarser).
 TEST(WaveGrid, StormBenchmarkSpacingsWithinTheirDocumentedError) {
   const WaveField exact = storm(290.0, true);
   WaveGridSpec spec;
