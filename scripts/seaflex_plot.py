@@ -154,6 +154,23 @@ def plot_beam(beam, nodes, t, cols, snapshots, out, written):
     save(fig, os.path.join(out, "beam_%s.png" % beam), written)
 
 
+def plot_panels(title, t, cols, names, panels, height, path, written):
+    """One panel per (channel suffix, scale, ylabel), each with a line per name over time;
+    nothing when there are no names."""
+    if not names:
+        return
+    fig, axes = plt.subplots(len(panels), 1, figsize=(10, height), sharex=True)
+    for ax, (suffix, scale, label) in zip(axes, panels):
+        for name in names:
+            ax.plot(t, [v * scale for v in cols[name + suffix]], lw=1, label=name)
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[-1].set_xlabel("time (s)")
+    fig.suptitle(title)
+    save(fig, path, written)
+
+
 def plot_group(title, t, series, ylabel, path, written):
     if not series:
         return
@@ -179,35 +196,16 @@ def report(header, cols, out, snapshots, written):
                os.path.join(out, "tensions.png"), written)
     cyl = sorted(h[: -len(".stroke")] for h in header
                  if h.endswith(".stroke") and h[: -len(".stroke")] + ".pressure" in header)
-    if cyl:
-        fig, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True)
-        for name in cyl:
-            axes[0].plot(t, cols[name + ".stroke"], lw=1, label=name)
-            axes[1].plot(t, [p / 1e6 for p in cols[name + ".pressure"]], lw=1, label=name)
-            axes[2].plot(t, cols[name + ".force"], lw=1, label=name)
-        for ax, label in zip(axes, ("stroke (m)", "pressure (MPa)", "force (N)")):
-            ax.set_ylabel(label)
-            ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=8)
-        axes[-1].set_xlabel("time (s)")
-        fig.suptitle("pneumatic cylinders")
-        save(fig, os.path.join(out, "cylinders.png"), written)
+    plot_panels("pneumatic cylinders", t, cols, cyl,
+                [(".stroke", 1.0, "stroke (m)"), (".pressure", 1e-6, "pressure (MPa)"),
+                 (".force", 1.0, "force (N)")], 9, os.path.join(out, "cylinders.png"), written)
     # constant-tension tensioners: a stroke and a tension, no gas pressure
     tens = sorted(h[: -len(".stroke")] for h in header
                   if h.endswith(".stroke") and h[: -len(".stroke")] + ".tension" in header
                   and h[: -len(".stroke")] + ".pressure" not in header)
-    if tens:
-        fig, axes = plt.subplots(2, 1, figsize=(10, 7), sharex=True)
-        for name in tens:
-            axes[0].plot(t, cols[name + ".stroke"], lw=1, label=name)
-            axes[1].plot(t, [v / 1e6 for v in cols[name + ".tension"]], lw=1, label=name)
-        for ax, label in zip(axes, ("stroke (m)", "tension (MN)")):
-            ax.set_ylabel(label)
-            ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=8)
-        axes[-1].set_xlabel("time (s)")
-        fig.suptitle("tensioners (stroke from the length at the start; tension along the line)")
-        save(fig, os.path.join(out, "tensioners.png"), written)
+    plot_panels("tensioners (stroke from the length at the start; tension along the line)", t,
+                cols, tens, [(".stroke", 1.0, "stroke (m)"), (".tension", 1e-6, "tension (MN)")],
+                7, os.path.join(out, "tensioners.png"), written)
     joints = sorted(h[: -len(".fx")] for h in header
                     if h.endswith(".fx") and h[: -len(".fx")] + ".fz" in header)
     series = []

@@ -92,6 +92,19 @@ void report(const Errors& e, double su, double sa, double se) {
               e.u / su, e.a / sa, e.p / (kRho * kG * se), e.wet);
 }
 
+// the errors between the nodes and the scales they are measured against, printed
+struct Measured {
+  Errors e;
+  double su, sa, se;
+};
+Measured measure(const WaveField& exact, const WaveGrid& grid, double zmin) {
+  Measured m{};
+  surface_sigmas(exact, m.su, m.sa, m.se);
+  m.e = compare_off_grid(exact, grid, zmin);
+  report(m.e, m.su, m.sa, m.se);
+  return m;
+}
+
 }  // namespace
 
 // Between the nodes: the documented bound (wave_grid.hpp, docs/model-format.md 4.2) with the
@@ -102,10 +115,7 @@ void report(const Errors& e, double su, double sa, double se) {
 TEST(WaveGrid, MatchesExactSumBetweenNodesWithStretching) {
   const WaveField exact = storm(290.0, true);
   const WaveGrid grid(exact, WaveGridSpec{});
-  double su, sa, se;
-  surface_sigmas(exact, su, sa, se);
-  const Errors e = compare_off_grid(exact, grid, -290.0);
-  report(e, su, sa, se);
+  const auto [e, su, sa, se] = measure(exact, grid, -290.0);
   EXPECT_GT(e.wet, 1200);
   EXPECT_LE(e.mismatched_wet, 2);
   EXPECT_LT(e.eta, 1e-4 * se) << e.eta / se;
@@ -128,10 +138,7 @@ TEST(WaveGrid, StormBenchmarkSpacingsWithinTheirDocumentedError) {
   spec.ds = 0.5;
   spec.dt = 0.2;
   const WaveGrid grid(exact, spec);
-  double su, sa, se;
-  surface_sigmas(exact, su, sa, se);
-  const Errors e = compare_off_grid(exact, grid, -290.0);
-  report(e, su, sa, se);
+  const auto [e, su, sa, se] = measure(exact, grid, -290.0);
   EXPECT_GT(e.wet, 1200);
   EXPECT_LT(e.eta, 1e-3 * se) << e.eta / se;
   EXPECT_LT(e.u, 1e-3 * su) << e.u / su;
@@ -142,10 +149,7 @@ TEST(WaveGrid, StormBenchmarkSpacingsWithinTheirDocumentedError) {
 TEST(WaveGrid, MatchesExactSumBetweenNodesWithoutStretching) {
   const WaveField exact = storm(290.0, false);
   const WaveGrid grid(exact, WaveGridSpec{});
-  double su, sa, se;
-  surface_sigmas(exact, su, sa, se);
-  const Errors e = compare_off_grid(exact, grid, -290.0);
-  report(e, su, sa, se);
+  const auto [e, su, sa, se] = measure(exact, grid, -290.0);
   EXPECT_GT(e.wet, 1200);
   EXPECT_LT(e.u, 1e-4 * su) << e.u / su;
   EXPECT_LT(e.a, 2e-4 * sa) << e.a / sa;
@@ -160,10 +164,7 @@ TEST(WaveGrid, MatchesExactSumInDeepWaterAndBelowTheGrid) {
   // lies in the first bin above 0.5 wp)
   const double wp = 2 * std::numbers::pi / 10.0;
   EXPECT_LT(grid.levels().back(), -21.0 / (0.25 * wp * wp / kG) * 0.8);
-  double su, sa, se;
-  surface_sigmas(exact, su, sa, se);
-  const Errors e = compare_off_grid(exact, grid, -300.0);
-  report(e, su, sa, se);
+  const auto [e, su, sa, se] = measure(exact, grid, -300.0);
   EXPECT_LT(e.u, 1e-4 * su) << e.u / su;
   EXPECT_LT(e.a, 2e-4 * sa) << e.a / sa;
   // far below the grid the exact sum is used: identical
