@@ -10,6 +10,7 @@ against the reference, with the wall time of each run (one thread).
     /usr/bin/python3 bench/storm/step_study.py SEAFLEX [--duration 630]
         [--steps 0.4 0.2 0.1 0.05] [--reference 0.025] [--kinematics grid]
         [--reference-kinematics exact] [--elements 100] [--work DIR]
+The reference runs at the default Newton tolerance, 1e-10 (the storm files: 1e-9).
 --kinematics (and --reference-kinematics) is `exact`, `grid` (the storm files' spacings,
 ds 0.5 m and dt 0.2 s), or e.g. `grid:ds=0.25,dt=0.1` for other spacings (the other keys of
 environment.waves.grid keep their defaults). With --work DIR the runs are kept in
@@ -37,9 +38,15 @@ RAO = str(here.parent.parent / "examples" / "drilling_rig_raos.csv")
 RAMP = 30.0
 
 
-def variant(n, kinematics, duration, step, output):
+def variant(n, kinematics, duration, step, output, rho_inf=None, tolerance=None):
     kind, _, spacing = kinematics.partition(":")
     text = storm_model(n, 200, kind, duration, "csv", RAO)
+    if tolerance is not None:
+        text, k = re.subn(r"\n  tolerance: [0-9.e+-]+\n", f"\n  tolerance: {tolerance:g}\n", text)
+        assert k == 1
+    if rho_inf is not None:
+        text, k = re.subn(r"\n  rho_inf: [0-9.]+\n", f"\n  rho_inf: {rho_inf:g}\n", text)
+        assert k == 1
     if spacing:
         grid = ", ".join(f"{k}: {v}" for k, v in (kv.split("=") for kv in spacing.split(",")))
         text = re.sub(r"\n    grid: \{[^\n]*", "", text)  # the storm file's own spacings
@@ -107,19 +114,25 @@ def main():
     p.add_argument("--reference-kinematics", default="exact")
     p.add_argument("--output", type=float, default=0.4)
     p.add_argument("--work", help="keep the runs in this folder and reuse them")
+    p.add_argument("--rho-inf", type=float,
+                   help="generalized-alpha's rho_inf for the runs at --steps (the reference "
+                        "keeps the storm file's)")
     a = p.parse_args()
     res = {}
     if a.work:
         os.makedirs(a.work, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
         tmp = a.work or tmp
-        runs = [(h, a.kinematics) for h in a.steps] + [(a.reference, a.kinematics)]
+        runs = [(h, a.kinematics, a.rho_inf) for h in a.steps] + [(a.reference, a.kinematics, None)]
         if a.reference_kinematics != a.kinematics:
-            runs.append((a.reference, a.reference_kinematics))
-        for h, kin in runs:
-            res[(h, kin)] = r = run(a.seaflex, variant(a.elements, kin, a.duration, h, a.output),
-                                    tmp, f"storm_{kin.replace(':', '_').replace(',', '_').replace('=', '')}"
-                                    f"_{h:g}_{a.duration:g}_{a.elements}_{a.output:g}")
+            runs.append((a.reference, a.reference_kinematics, None))
+        for h, kin, rho in runs:
+            # the reference at the default Newton tolerance, 1e-10 (the storm files: 1e-9)
+            tol = 1e-10 if h == a.reference else None
+            res[(h, kin)] = r = run(
+                a.seaflex, variant(a.elements, kin, a.duration, h, a.output, rho, tol), tmp,
+                f"storm_{kin.replace(':', '_').replace(',', '_').replace('=', '')}"
+                f"_{h:g}_{a.duration:g}_{a.elements}_{a.output:g}" + (f"_rho{rho:g}" if rho is not None else ""))
             print(f"# h = {h:g} s, {kin}: {r.get('failed') or r['summary']} "
                   f"({r['wall']:.1f} s wall)", flush=True)
     ref = res[(a.reference, a.reference_kinematics)]

@@ -63,6 +63,17 @@ void GeneralizedAlpha::prepare(const Dae& dae) {
   constant_mass_ = dae.constant_mass();
   product_ = dae.supports_product();
   length_scale_ = dae.length_scale();
+  // the multipliers measured for convergence: all but the reaction-only rows
+  measured_rows_.clear();
+  const std::vector<Index> reaction_only = dae.reaction_only_rows();
+  if (!reaction_only.empty())
+    for (Index r = 0, k = 0; r < m_; ++r) {
+      if (k < static_cast<Index>(reaction_only.size()) && reaction_only[k] == r)
+        ++k;
+      else
+        measured_rows_.push_back(r);
+    }
+  all_rows_measured_ = reaction_only.empty();
   if (!constant_mass_) mass_eval_ = dae.make_eval();
   if (m_ > 0 && s_.constraints == ConstraintLevel::kStabilizedIndex2)
     projection_eval_ = dae.make_eval();
@@ -483,7 +494,15 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     q_tol = std::max(s_.tolerance * std::min(q_scale_, length_scale_),
                      kUlps * trial_.q.lpNorm<Eigen::Infinity>());
     last_da = n_ > 0 ? bp * sol_.head(n_).cwiseAbs().maxCoeff(&worst) : 0.0;
-    last_dl = m_ > 0 ? bp * sol_.tail(m_).lpNorm<Eigen::Infinity>() : 0.0;
+    // the reaction-only multipliers (a body on an imposed motion) are not measured: the
+    // step's other unknowns do not depend on them (Dae::reaction_only_rows)
+    last_dl = 0.0;
+    if (all_rows_measured_) {
+      if (m_ > 0) last_dl = bp * sol_.tail(m_).lpNorm<Eigen::Infinity>();
+    } else {
+      for (const Index r : measured_rows_) last_dl = std::max(last_dl, std::abs(sol_[n_ + r]));
+      last_dl *= bp;
+    }
     last_dy = index2 ? dy_.lpNorm<Eigen::Infinity>() : 0.0;
     auto ratio = [](double d, double tol) { return tol > 0.0 ? d / tol : (d > 0.0 ? 1e300 : 0.0); };
     const double norm =

@@ -81,6 +81,13 @@ class Dae {
   /// The shortest length over which coordinates are differenced into strains (m), the
   /// smallest Body::length_scale(); +inf when no body has one.
   virtual double length_scale() const { return std::numeric_limits<double>::infinity(); }
+  /// Constraint rows whose multipliers are outputs only: the rows of a body that touch that
+  /// body alone and are as many as its coordinates (a vessel on an imposed motion, a body
+  /// fixed to the ground), so that they fix its coordinates by themselves. Their multipliers
+  /// appear in that body's equations of motion alone, and those equations, whatever the
+  /// multipliers, constrain nothing else: the other unknowns of a Newton step do not depend
+  /// on them (generalized-alpha leaves them out of its convergence measure). Ascending.
+  virtual std::vector<Index> reaction_only_rows() const { return {}; }
   /// Forces with memory: start(state) once before a time simulation, accept_step(state)
   /// after every accepted step (DESIGN: memory enters only through z or accept_step).
   virtual void start(const State& /*state*/) {}

@@ -63,6 +63,27 @@ void System::finalize() {
   }
   pattern_.finalize();
   cq_pattern_.finalize();
+  // the rows that hold a body by themselves (Dae::reaction_only_rows): of the constraints
+  // whose coordinates all lie in one body, as many rows as that body has coordinates
+  std::vector<Index> held_rows(bodies_.size(), 0);
+  std::vector<std::size_t> owner(constraints_.size(), bodies_.size());
+  for (std::size_t k = 0; k < constraints_.size(); ++k) {
+    const auto& dofs = constraint_dofs_[k];
+    if (dofs.empty()) continue;
+    const auto [lo, hi] = std::minmax_element(dofs.begin(), dofs.end());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      const Index off = bodies_[b]->offset();
+      if (*lo >= off && *hi < off + bodies_[b]->num_coordinates()) {
+        owner[k] = b;
+        held_rows[b] += constraints_[k]->num_rows();
+        break;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < constraints_.size(); ++k)
+    if (owner[k] < bodies_.size() && held_rows[owner[k]] == bodies_[owner[k]]->num_coordinates())
+      for (Index r = 0; r < constraints_[k]->num_rows(); ++r)
+        reaction_only_rows_.push_back(row_offset_[k] + r);
   finalized_ = true;
 }
 

@@ -59,6 +59,7 @@ class System : public Dae {
   std::string constraint_name(Index row) const override;
   double step_scale(const State& state, const VecX& dq) const override;
   double length_scale() const override;
+  std::vector<Index> reaction_only_rows() const override { return reaction_only_rows_; }
   bool supports_product() const override { return true; }
   bool supports_constraint_jacobian() const override { return true; }
   void start(const State& state) override;
@@ -81,6 +82,7 @@ class System : public Dae {
   math::SparseBlockAssembler pattern_;
   std::vector<math::BlockId> cq_only_block_;  // C_q alone (DaeRequest::constraint_jacobian)
   math::SparseBlockAssembler cq_pattern_;
+  std::vector<Index> reaction_only_rows_;
 };
 
 }  // namespace seaflex
