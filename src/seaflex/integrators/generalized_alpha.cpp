@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "seaflex/core/errors.hpp"
 #include "seaflex/integrators/instrumented.hpp"
@@ -298,20 +300,28 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
 }
 
 void GeneralizedAlpha::project_predictor(const Dae& dae, const State& state, double h,
-                                         double a_per_v) {
+                                         double a_per_v, double q_per_a) {
   // the predicted velocities onto C_q v + C_t = 0 and then the positions onto C = 0, both
   // along R = C_q(q_n)^T (the projection's own directions): dv = R eta with
   // C_q R eta = -Cdot, made through the accelerations (dv/da = gamma'/beta'), then
-  // dq = R eta with C_q R eta = -C kept in the projection's correction
+  // dq = R eta with C_q R eta = -C kept in the projection's correction. The velocity
+  // projection moves the positions by da / beta' (q_per_a); C there is taken to first order,
+  // C + C_q(q_n) da / beta', without evaluating the constraints again: the predictor only
+  // starts the iterations, whose solution it does not change
   DaeRequest req;
   req.forces = false;
+  req.constraint_jacobian = dae.supports_constraint_jacobian();
   update_iterate(state, h);
   instrumented::evaluate(dae, trial_, req, eval_, stats_);
   eta_ = projection_solver_.solve(-eval_.Cdot);
-  a_.noalias() += a_per_v * (constraint_jacobian_.transpose() * eta_);
-  update_iterate(state, h);
-  instrumented::evaluate(dae, trial_, req, eval_, stats_);
-  eta_ = projection_solver_.solve(-eval_.C);
+  dy_.noalias() = constraint_jacobian_.transpose() * eta_;
+  a_.noalias() += a_per_v * dy_;
+  predicted_C_ = eval_.C;
+  if (req.constraint_jacobian)
+    predicted_C_.noalias() += (a_per_v * q_per_a) * (eval_.Cq.matrix() * dy_);
+  else
+    predicted_C_.noalias() += (a_per_v * q_per_a) * (constraint_jacobian_ * dy_);
+  eta_ = projection_solver_.solve(-predicted_C_);
   corr_.noalias() = constraint_jacobian_.transpose() * eta_;
 }
 
@@ -329,12 +339,36 @@ void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
     instrumented::evaluate(dae, state, req, projection_eval_, stats_);
     constraint_jacobian_ = projection_eval_.kkt.matrix().bottomLeftCorner(m_, n_);
   }
-  const SpMat BBt = constraint_jacobian_ * constraint_jacobian_.transpose();
-  if (!projection_analyzed_) {
-    projection_solver_.analyzePattern(BBt);
-    projection_analyzed_ = true;
+  if (m_ <= s_.dense_projection_rows) {
+    // C_q C_q^T summed coordinate by coordinate into an m x m array (a coordinate's column of
+    // C_q has a few entries: the sum costs sum_k nnz_k^2), then copied into a matrix that
+    // stores every entry, analyzed once: no sparse product and no allocation per step
+    projection_dense_.setZero(m_, m_);
+    for (Index k = 0; k < constraint_jacobian_.outerSize(); ++k)
+      for (SpMat::InnerIterator a(constraint_jacobian_, k); a; ++a)
+        for (SpMat::InnerIterator b(constraint_jacobian_, k); b; ++b)
+          projection_dense_(a.row(), b.row()) += a.value() * b.value();
+    if (!projection_analyzed_) {
+      std::vector<Eigen::Triplet<double>> all;
+      all.reserve(static_cast<std::size_t>(m_ * m_));
+      for (Index j = 0; j < m_; ++j)
+        for (Index i = 0; i < m_; ++i) all.emplace_back(i, j, 1.0);
+      projection_matrix_.resize(m_, m_);
+      projection_matrix_.setFromTriplets(all.begin(), all.end());
+      projection_solver_.analyzePattern(projection_matrix_);
+      projection_analyzed_ = true;
+    }
+    // every column full and in row order: the values are the array's, column by column
+    std::copy(projection_dense_.data(), projection_dense_.data() + m_ * m_,
+              projection_matrix_.valuePtr());
+  } else {
+    projection_matrix_ = constraint_jacobian_ * constraint_jacobian_.transpose();
+    if (!projection_analyzed_) {
+      projection_solver_.analyzePattern(projection_matrix_);
+      projection_analyzed_ = true;
+    }
   }
-  projection_solver_.factorize(BBt);
+  projection_solver_.factorize(projection_matrix_);
   projection_ready_ = projection_solver_.info() == Eigen::Success;
   if (!projection_ready_)
     throw SolverError(
@@ -377,7 +411,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   }
   if (index2) {
     try {
-      project_predictor(dae, state, h, bp / gp);
+      project_predictor(dae, state, h, bp / gp, 1.0 / bp);
     } catch (const SolverError& e) {
       return fail(e.what());
     }

@@ -123,6 +123,10 @@ struct GeneralizedAlphaSettings {
   /// modified Newton refactors when the updates contract more slowly than this
   double refresh_rate = 0.25;
   LinearSolverKind linear_solver = kDefaultLinearSolver;  ///< backend of the Newton solves
+  /// index 2: C_q C_q^T of up to this many constraint rows is summed into a full m x m
+  /// matrix, column by column of C_q (a few entries each), instead of a sparse product per
+  /// step; the same matrix either way
+  Index dense_projection_rows = 64;
   /// Chung & Hulbert's parameters for a spectral radius rho_inf in [0, 1].
   static GeneralizedAlphaSettings from_rho_inf(double rho_inf);
   /// HHT-alpha's parameters (alpha_m = 0) for rho_inf in [1/2, 1].
@@ -151,6 +155,8 @@ class GeneralizedAlpha : public Integrator {
   const GeneralizedAlphaSettings& settings() const { return s_; }
   /// The true acceleration q'' at the last accepted step.
   const VecX& acceleration() const { return a_n_; }
+  /// Index 2: the projection's C_q C_q^T as last factored (at the last accepted state).
+  const SpMat& projection_matrix() const { return projection_matrix_; }
 
  private:
   void prepare(const Dae& dae);
@@ -164,8 +170,10 @@ class GeneralizedAlpha : public Integrator {
   bool refactor(const Dae& dae, const State& trial, double h);
   // C_q at the step's start and the factorization of C_q C_q^T (index 2)
   /// Index 2: the predictor's velocities and positions projected onto the constraints
-  /// (a_per_v = beta'/gamma', the acceleration change per velocity change).
-  void project_predictor(const Dae& dae, const State& state, double h, double a_per_v);
+  /// (a_per_v = beta'/gamma', the acceleration change per velocity change; q_per_a = 1/beta',
+  /// the position change per acceleration change).
+  void project_predictor(const Dae& dae, const State& state, double h, double a_per_v,
+                         double q_per_a);
   void prepare_projection(const Dae& dae, const State& state);
 
   GeneralizedAlphaSettings s_;
@@ -192,9 +200,13 @@ class GeneralizedAlpha : public Integrator {
   VecX a_n_, abar_n_, a_, abar_, Ma_, rhs_, sol_;
   // index 2: the projection term R eta of q_{n+1}, R = C_q(q_n)^T, its update, and
   // C_q(q_n) C_q(q_n)^T factored once per step
-  VecX corr_, dy_, eta_;
+  VecX corr_, dy_, eta_, predicted_C_;
   DaeEval projection_eval_;
   SpMat constraint_jacobian_;
+  // C_q C_q^T: up to settings.dense_projection_rows rows summed into projection_dense_ and
+  // stored with every entry (no sparse product per step); beyond, the sparse product
+  MatX projection_dense_;
+  SpMat projection_matrix_;
   Eigen::SimplicialLDLT<SpMat> projection_solver_;
   bool projection_analyzed_ = false;
   bool projection_ready_ = false;  // factored for the current state
