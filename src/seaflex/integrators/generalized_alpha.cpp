@@ -306,8 +306,9 @@ void GeneralizedAlpha::project_predictor(const Dae& dae, const State& state, dou
   // C_q R eta = -Cdot, made through the accelerations (dv/da = gamma'/beta'), then
   // dq = R eta with C_q R eta = -C kept in the projection's correction. The velocity
   // projection moves the positions by da / beta' (q_per_a); C there is taken to first order,
-  // C + C_q(q_n) da / beta', without evaluating the constraints again: the predictor only
-  // starts the iterations, whose solution it does not change
+  // C + C_q da / beta' with the C_q of the same evaluation (C_q(q_n) when the Dae cannot give
+  // C_q alone), without evaluating the constraints again: the predictor only starts the
+  // iterations, whose solution it does not change
   DaeRequest req;
   req.forces = false;
   req.constraint_jacobian = dae.supports_constraint_jacobian();
