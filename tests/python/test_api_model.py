@@ -181,9 +181,11 @@ def test_statistics_equal_the_statistics_section(tmp_path):
 def test_a_run_releases_the_gil():
     # one output row at the end: a run that held the GIL would stop this thread's loop for
     # its whole wall time; released, the loop goes on (gaps of a switch interval, 5 ms,
-    # while the run takes the GIL back; 0.1 s allows for a loaded machine)
+    # while the run takes the GIL back; 0.1 s allows for a loaded machine). 12 s of the
+    # pendulum (RK4, 1 ms steps) take about 0.6 s of wall time; 4 s took 0.18 s on a fast
+    # moment of the CI machine, under the 0.2 s the test needs to see gaps at all
     model = seaflex.Model.from_file(PENDULUM)
-    model.set("dynamics.output_interval", 4.0)
+    model.set("dynamics.output_interval", 12.0)
     stamps, done = [], threading.Event()
 
     def tick():
@@ -194,7 +196,7 @@ def test_a_run_releases_the_gil():
     thread.start()
     try:
         start = time.monotonic()
-        results = model.run(duration=4.0)
+        results = model.run(duration=12.0)
         wall = time.monotonic() - start
     finally:
         done.set()
