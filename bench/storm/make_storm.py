@@ -227,7 +227,7 @@ def storm_model(n, components=200, kinematics="grid", duration=10830.0, fmt="hdf
     # Morison Gauss points: 3 on 3 m elements, 2 on elements of 1 m or less (measured:
     # docs/performance.md, "Morison Gauss points" and "Two Morison Gauss points on 0.3 m
     # elements")
-    length = 300.0 / n
+    length = (depth + top_z) / n  # the riser runs from the seabed to top_z
     gauss = 3 if length > 1.0 else 2
     if gauss == 3:
         gauss_comment = (

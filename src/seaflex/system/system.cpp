@@ -71,13 +71,10 @@ void System::finalize() {
     const auto& dofs = constraint_dofs_[k];
     if (dofs.empty()) continue;
     const auto [lo, hi] = std::minmax_element(dofs.begin(), dofs.end());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) {
-      const Index off = bodies_[b]->offset();
-      if (*lo >= off && *hi < off + bodies_[b]->num_coordinates()) {
-        owner[k] = b;
-        held_rows[b] += constraints_[k]->num_rows();
-        break;
-      }
+    const std::size_t b = body_index(*lo);
+    if (b < bodies_.size() && *hi < bodies_[b]->offset() + bodies_[b]->num_coordinates()) {
+      owner[k] = b;
+      held_rows[b] += constraints_[k]->num_rows();
     }
   }
   for (std::size_t k = 0; k < constraints_.size(); ++k)
@@ -210,15 +207,21 @@ void System::accept_step(const State& state) {
   for (auto& f : forces_) f->accept_step(state);
 }
 
-std::string System::coordinate_name(Index i) const {
-  // bodies are numbered in order: the last one that starts at or before i (binary search)
+// the body that owns a coordinate: bodies are numbered in order, so the last one that starts
+// at or before i (binary search); bodies_.size() when none holds it
+std::size_t System::body_index(Index i) const {
   const auto it = std::upper_bound(bodies_.begin(), bodies_.end(), i,
                                    [](Index c, const auto& b) { return c < b->offset(); });
-  if (it != bodies_.begin()) {
-    const Body& b = **std::prev(it);
-    if (i >= b.offset() && i < b.offset() + b.num_coordinates())
-      return b.coordinate_name(i - b.offset());
-  }
+  if (it == bodies_.begin()) return bodies_.size();
+  const Body& b = **std::prev(it);
+  return i < b.offset() + b.num_coordinates()
+             ? static_cast<std::size_t>(std::prev(it) - bodies_.begin())
+             : bodies_.size();
+}
+
+std::string System::coordinate_name(Index i) const {
+  const std::size_t k = body_index(i);
+  if (k < bodies_.size()) return bodies_[k]->coordinate_name(i - bodies_[k]->offset());
   return fmt::format("q[{}]", i);
 }
 

@@ -77,6 +77,7 @@ class System : public Dae {
   Index m_ = 0;
   std::vector<Index> row_offset_;  // constraint -> first row
   std::size_t constraint_index(Index row) const;
+  std::size_t body_index(Index coordinate) const;  // bodies_.size() when none holds it
   std::vector<std::vector<Index>> constraint_dofs_;
   std::vector<math::BlockId> cq_block_, cqt_block_, hess_block_;
   math::SparseBlockAssembler pattern_;
