@@ -17,12 +17,14 @@
 // with little fill: KLU's left-looking Gilbert-Peierls LU, with no BLAS and no supernodes
 // or frontal matrices to set up, suits them. UMFPACK's solve is about 15 % faster than
 // KLU's here because it drops the exact zeros of the fixed pattern from its factors (the
-// riser bends in one plane); SparseLU's solve is about 35 % slower than KLU's.
+// riser bends in one plane); SparseLU's solve is about 35 % slower than KLU's. (Measured
+// with klu_solve; KLU's factors are now solved by rows without those zeros, kkt_solver.cpp.)
 //
 // KLU is called directly (kkt_solver.cpp): the first factorization of a pattern pivots
 // (klu_factor), later ones reuse its pivot order (klu_refactor, no allocation, about half
 // the time) while the pivots stay sound (klu_rcond and klu_rgrowth against the last
-// pivoting factorization), and pivot again otherwise.
+// pivoting factorization), and pivot again otherwise. Its factors are copied after each
+// factorization (klu_extract) and solved by rows without their exact zeros.
 // Limitations: UMFPACK allocates twice in every solve (Eigen's wrapper calls
 // umfpack_di_solve, not umfpack_di_wsolve), against the "no time step allocates" rule of
 // DESIGN.md; KLU and SparseLU do not allocate in solve(). A pivoting numeric factorization
