@@ -154,6 +154,39 @@ TEST(CableElastic, FusedForcesEqualTheSeparateModels) {
     }
 }
 
+// Reduced integration (the storm files' elastic gauss_points: 3). At the straight, unstrained
+// element the linearized axial strain t.dr' is quadratic and the linearized curvature linear
+// along the element, so the stiffness integrands are of degree 4 and 2: 3 Gauss points
+// (exact to degree 5) give the same tangent as 5 (to round-off, 1e-12 of its norm), and a
+// 12 x 12 tangent with exactly 5 zero eigenvalues (3 translations, 2 rotations about axes
+// across the element: no spurious zero-energy mode). 2 points leave a sixth (a quadratic
+// axial strain that vanishes at both points). Deformed, 3 and 5 points differ (the energy's
+// degree-8 terms), by more than 1e-6 of the tangent here.
+TEST(CableElastic, ThreePointsIntegrateTheLinearizedStiffnessExactly) {
+  const Vec12 e0 = straight(Vec3(0.2, -0.1, 0.5), Vec3(1.0, 0.4, -0.3).normalized(), kL);
+  auto tangent = [](int points, const Vec12& e) {
+    const CableElasticity el(kL, kEA, kEI, AxialModel::kExact, BendingModel::kExact, points);
+    Vec12 Q = Vec12::Zero();
+    Mat12 K = Mat12::Zero();
+    el.add_forces(e, Q, &K);
+    return K;
+  };
+  auto zero_eigenvalues = [](const Mat12& K) {
+    const Eigen::SelfAdjointEigenSolver<Mat12> eig(0.5 * (K + K.transpose()));
+    const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
+    int zeros = 0;
+    for (int i = 0; i < 12; ++i) zeros += std::abs(eig.eigenvalues()[i]) < 1e-10 * largest;
+    return zeros;
+  };
+  const Mat12 K5 = tangent(5, e0), K3 = tangent(3, e0), K2 = tangent(2, e0);
+  EXPECT_LT((K3 - K5).norm(), 1e-12 * K5.norm());
+  EXPECT_EQ(zero_eigenvalues(K5), 5);
+  EXPECT_EQ(zero_eigenvalues(K3), 5);
+  EXPECT_EQ(zero_eigenvalues(K2), 6);
+  const Vec12 e = deformed(0.5);
+  EXPECT_GT((tangent(3, e) - tangent(5, e)).norm(), 1e-6 * tangent(5, e).norm());
+}
+
 // L2 (closed form, exact tensor) and the exact axial model (Gauss quadrature of the
 // same degree-8 polynomial) agree to round-off
 TEST(CableElastic, L2ClosedFormEqualsQuadrature) {
