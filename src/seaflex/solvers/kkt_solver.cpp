@@ -160,12 +160,12 @@ class KluBackend final : public detail::KktBackend {
       const int k1 = r_[blk], k2 = r_[blk + 1];
       for (int i = k1; i < k2; ++i) {
         double sum = w[i];
-        for (int e = lp_[i]; e < lp_[i + 1]; ++e) sum -= lx_[e] * w[li_[e]];
+        for (int e = l_.p[i]; e < l_.p[i + 1]; ++e) sum -= l_.x[e] * w[l_.i[e]];
         w[i] = sum;
       }
       for (int i = k2 - 1; i >= k1; --i) {
         double sum = w[i];
-        for (int e = up_[i]; e < up_[i + 1]; ++e) sum -= ux_[e] * w[ui_[e]];
+        for (int e = u_.p[i]; e < u_.p[i + 1]; ++e) sum -= u_.x[e] * w[u_.i[e]];
         w[i] = sum * inv_udiag_[i];
       }
       for (int j = k1; j < k2; ++j)
@@ -217,45 +217,78 @@ class KluBackend final : public detail::KktBackend {
       message = klu_status(common_);
       return false;
     }
-    to_rows(lp_, li_, lx_, nullptr);
+    if (!(reused_ && l_.gather(cp_, cx_, nullptr))) l_.build(n_, cp_, ci_, cx_, nullptr);
     if (!klu_extract(numeric_, symbolic_, nullptr, nullptr, nullptr, cp_.data(), ci_.data(),
                      cx_.data(), nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
                      &common_)) {
       message = klu_status(common_);
       return false;
     }
-    to_rows(up_, ui_, ux_, &inv_udiag_);
+    if (!(reused_ && u_.gather(cp_, cx_, &inv_udiag_))) u_.build(n_, cp_, ci_, cx_, &inv_udiag_);
     // the back substitution multiplies by the inverse: a division's latency would lie on
     // its chain of dependent rows
     for (double& d : inv_udiag_) d = 1.0 / d;
     message.clear();
     return true;
   }
-  // the columns cp_, ci_, cx_ as rows without the diagonal and the exact zeros; the diagonal
-  // into diag when given
-  void to_rows(std::vector<int>& rp, std::vector<int>& ri, std::vector<double>& rx,
-               std::vector<double>* diag) {
-    rp.assign(n_ + 1, 0);
-    for (int j = 0; j < n_; ++j)
-      for (int e = cp_[j]; e < cp_[j + 1]; ++e)
-        if (ci_[e] != j && cx_[e] != 0.0) ++rp[ci_[e] + 1];
-    for (int i = 0; i < n_; ++i) rp[i + 1] += rp[i];
-    ri.resize(rp[n_]);
-    rx.resize(rp[n_]);
-    next_.assign(rp.begin(), rp.end() - 1);
-    for (int j = 0; j < n_; ++j)
-      for (int e = cp_[j]; e < cp_[j + 1]; ++e) {
-        if (ci_[e] == j) {
-          if (diag) (*diag)[j] = cx_[e];
-        } else if (cx_[e] != 0.0) {
-          ri[next_[ci_[e]]] = j;
-          rx[next_[ci_[e]]++] = cx_[e];
+  // L or U without its diagonal by rows, from klu_extract's columns (cp, ci, cx)
+  struct RowFactor {
+    std::vector<int> p, i;  // row starts, column indices
+    std::vector<double> x;
+    std::vector<int> src, dropped, diag_src;  // the kept, dropped and diagonal column entries
+    std::vector<int> next;                    // build's workspace
+    bool built = false;
+    // all rows again, without the diagonal (into diag when given) and the exact zeros
+    void build(int n, const std::vector<int>& cp, const std::vector<int>& ci,
+               const std::vector<double>& cx, std::vector<double>* diag) {
+      p.assign(n + 1, 0);
+      dropped.clear();
+      diag_src.assign(n, -1);
+      for (int j = 0; j < n; ++j)
+        for (int e = cp[j]; e < cp[j + 1]; ++e) {
+          if (ci[e] == j)
+            diag_src[j] = e;
+          else if (cx[e] != 0.0)
+            ++p[ci[e] + 1];
+          else
+            dropped.push_back(e);
         }
-      }
-  }
+      for (int r = 0; r < n; ++r) p[r + 1] += p[r];
+      i.resize(p[n]);
+      x.resize(p[n]);
+      src.resize(p[n]);
+      next.assign(p.begin(), p.end() - 1);
+      for (int j = 0; j < n; ++j)
+        for (int e = cp[j]; e < cp[j + 1]; ++e)
+          if (ci[e] != j && cx[e] != 0.0) {
+            const int k = next[ci[e]]++;
+            i[k] = j;
+            x[k] = cx[e];
+            src[k] = e;
+          }
+      if (diag)
+        for (int j = 0; j < n; ++j) (*diag)[j] = cx[diag_src[j]];
+      built = true;
+    }
+    // after klu_refactor (the same pattern and pivots, so the same column entries): the new
+    // values into the rows built before, unless an entry dropped as zero is no longer zero
+    // (then false: build again)
+    bool gather(const std::vector<int>& cp, const std::vector<double>& cx,
+                std::vector<double>* diag) {
+      if (!built || static_cast<int>(diag_src.size()) + 1 != static_cast<int>(cp.size()))
+        return false;
+      for (const int e : dropped)
+        if (cx[e] != 0.0) return false;
+      for (std::size_t k = 0; k < src.size(); ++k) x[k] = cx[src[k]];
+      if (diag)
+        for (std::size_t j = 0; j < diag_src.size(); ++j) (*diag)[j] = cx[diag_src[j]];
+      return true;
+    }
+  };
   void release() {
     if (numeric_) klu_free_numeric(&numeric_, &common_);
     if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
+    l_.built = u_.built = false;
     pattern_ap_.clear();
     pattern_ai_.clear();
     reused_ = false;
@@ -272,11 +305,12 @@ class KluBackend final : public detail::KktBackend {
   bool reuse_ = false, reused_ = false;
   int refactorizations_ = 0;
   // the factors for solve() (extract): L and U without their diagonals by rows, 1 / U's diagonal,
-  // F by columns, the permutations, scale factors and block boundaries; cp_, ci_, cx_ and
-  // next_ are the extraction's buffers, work_ the solve's
+  // F by columns, the permutations, scale factors and block boundaries; cp_, ci_, cx_ are the
+  // extraction's buffers, work_ the solve's
   int nblocks_ = 0;
-  std::vector<int> lp_, li_, up_, ui_, fp_, fi_, p_, q_, r_, cp_, ci_, next_;
-  std::vector<double> lx_, ux_, inv_udiag_, fx_, rs_, cx_;
+  RowFactor l_, u_;
+  std::vector<int> fp_, fi_, p_, q_, r_, cp_, ci_;
+  std::vector<double> inv_udiag_, fx_, rs_, cx_;
   mutable std::vector<double> work_;
 };
 
