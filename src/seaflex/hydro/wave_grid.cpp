@@ -51,6 +51,11 @@ WaveGrid::WaveGrid(WaveField field, WaveGridSpec spec)
   std::stable_sort(comps_.begin(), comps_.end(),
                    [](const WaveComponent& a, const WaveComponent& b) { return a.k < b.k; });
   const auto& comps = comps_;
+  turn_.resize(2 * comps.size());  // e^{i w dt}, the time phasors' step
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    turn_[2 * i] = std::cos(comps[i].omega * spec.dt);
+    turn_[2 * i + 1] = std::sin(comps[i].omega * spec.dt);
+  }
   if (!comps.empty()) {
     for (const auto& c : comps)
       if (c.direction != comps.front().direction)
@@ -204,14 +209,34 @@ WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
     recycle(slot);
     slot.n = n;
     ++generation_;
-    // the time phasors of t_n: N sines and cosines per time sample, shared by its stations
-    const double t = static_cast<double>(n) * spec_.dt;
+    // the time phasors of t_n, shared by its stations: N sines and cosines at an anchor
+    // (every kAnchor-th sample), the samples after it by turning the previous one's by
+    // e^{i w dt}: each sample's phasors are the same chain of products from its anchor
+    // whichever order the samples are made in (from sample n - 1 when its slot holds it,
+    // else from the anchor), so the values do not depend on the evaluation order (a restart,
+    // the thread); the chain's round-off is at most kAnchor ulps
+    const std::int64_t anchor = n - ((n % kAnchor) + kAnchor) % kAnchor;
+    const Slot& before = slot_of(n - 1);
+    std::int64_t from = anchor;
     slot.phasors.resize(2 * N);
-    for (std::size_t i = 0; i < N; ++i) {
-      const double wt = comps[i].omega * t + comps[i].phase;
-      slot.phasors[2 * i] = std::cos(wt);
-      slot.phasors[2 * i + 1] = std::sin(wt);
+    if (n != anchor && before.n == n - 1 && before.phasors.size() == 2 * N) {
+      slot.phasors = before.phasors;
+      from = n - 1;
+    } else {
+      const double t = static_cast<double>(anchor) * spec_.dt;
+      for (std::size_t i = 0; i < N; ++i) {
+        const double wt = comps[i].omega * t + comps[i].phase;
+        slot.phasors[2 * i] = std::cos(wt);
+        slot.phasors[2 * i + 1] = std::sin(wt);
+      }
     }
+    for (std::int64_t k = from; k < n; ++k)
+      for (std::size_t i = 0; i < N; ++i) {
+        const double c = slot.phasors[2 * i], sn = slot.phasors[2 * i + 1];
+        const double rc = turn_[2 * i], rs = turn_[2 * i + 1];
+        slot.phasors[2 * i] = c * rc - sn * rs;
+        slot.phasors[2 * i + 1] = sn * rc + c * rs;
+      }
   }
   auto [it, inserted] = slot.columns.try_emplace(m);
   Column& col = it->second;

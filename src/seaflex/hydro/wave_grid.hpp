@@ -8,7 +8,8 @@
 //   exact sums (without the ramp) of eta(s, t) and of the Airy velocity, local acceleration
 //   and dynamic pressure at z_j. A column (s_m, t_n) costs N complex products when first
 //   asked for (its elevation: the phase w t_n - k s_m + phase is the product of a time
-//   phasor e^{i (w t_n + phase)}, N sines and cosines once per time sample, and a station
+//   phasor e^{i (w t_n + phase)}, N complex products per time sample from the previous
+//   sample's, N sines and cosines at every 64th (kAnchor), and a station
 //   phasor e^{-i k s_m}, N once per station), and 5 N multiply-adds per level, filled by
 //   blocks of kBlock levels as points need them; each once per run. The cost per
 //   evaluation (16 columns x 4 levels x 5 values) does not depend on N; the filling grows
@@ -133,7 +134,8 @@ class WaveGrid {
   struct Slot {
     std::int64_t n = INT64_MIN;
     std::unordered_map<std::int64_t, Column> columns;
-    // the time phasors of t_n: [2 i] = cos(w_i t_n + phase_i), [2 i + 1] = sin(...)
+    // the time phasors of t_n: [2 i] = cos(w_i t_n + phase_i), [2 i + 1] = sin(...), made
+    // from the anchor's by turning (column())
     std::vector<double> phasors;
   };
   // the station phasors of s_m: [2 i] = cos(k_i s_m), [2 i + 1] = sin(k_i s_m); caller holds
@@ -141,6 +143,8 @@ class WaveGrid {
   // again): 4096, or fewer so that they take at most an eighth of spec.max_bytes.
   const std::vector<double>& station_phasors(std::int64_t m) const;
   static constexpr int kSlots = 64;
+  // the time samples whose phasors are sines and cosines; the others are turned from them
+  static constexpr std::int64_t kAnchor = 64;
   // columns of recycled slots, kept to be filled again without allocating or zeroing their
   // coefficients (at most kSpareColumns; emptied with the slots when over the memory cap)
   static constexpr std::size_t kSpareColumns = 64;
@@ -208,6 +212,7 @@ class WaveGrid {
   // field_'s components sorted by wave number (depth truncation); the grid uses these
   std::vector<WaveComponent> comps_;
   std::vector<std::size_t> keep_;  // components summed at each level
+  std::vector<double> turn_;       // [2 i], [2 i + 1]: cos, sin of w_i dt (sorted components)
   WaveGridSpec spec_;
   double cos_b_ = 1.0, sin_b_ = 0.0;
   std::vector<double> z_;
