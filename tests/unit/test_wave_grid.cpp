@@ -235,6 +235,41 @@ TEST(WaveGrid, TimePhasorsDoNotDependOnTheOrderOfEvaluation) {
   }
 }
 
+// The dynamic pressure is filled and interpolated only for callers that ask for it (a beam's
+// Morison load does not): without it the velocity and acceleration are the same bits, the
+// pressure is NaN and as many blocks of levels are filled; asked for later at the same points
+// (the levels' velocities already there), the pressure is the same bits as on a grid that
+// filled everything at once.
+TEST(WaveGrid, PressureOnlyWhenAskedFor) {
+  const WaveField exact = storm(290.0, true);
+  const WaveGridSpec spec;
+  const WaveGrid without(exact, spec), with(exact, spec);
+  const double t = 123.45;
+  int wet = 0;
+  for (int i = 0; i < 40; ++i) {
+    const Vec3 p(0.7 * i - 9.0, 0.2 * i, -0.9 * i);
+    SCOPED_TRACE(i);
+    const FluidKinematics kw = without.kinematics(p, t, false), ka = with.kinematics(p, t);
+    ASSERT_EQ(kw.wet, ka.wet);
+    if (!ka.wet) continue;  // above the surface: all zero on both
+    ++wet;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(kw.velocity[c], ka.velocity[c]);
+      EXPECT_EQ(kw.acceleration[c], ka.acceleration[c]);
+    }
+    EXPECT_TRUE(std::isnan(kw.dynamic_pressure));
+    EXPECT_TRUE(std::isfinite(ka.dynamic_pressure));
+  }
+  EXPECT_GT(wet, 30);
+  EXPECT_EQ(without.blocks_filled(), with.blocks_filled());
+  for (int i = 0; i < 40; ++i) {
+    const Vec3 p(0.7 * i - 9.0, 0.2 * i, -0.9 * i);
+    const FluidKinematics kw = without.kinematics(p, t), ka = with.kinematics(p, t);
+    EXPECT_EQ(kw.dynamic_pressure, ka.dynamic_pressure) << i;
+    EXPECT_EQ(kw.velocity.x(), ka.velocity.x()) << i;
+  }
+}
+
 // The ramp multiplies the grid's values as it does the exact sum's.
 TEST(WaveGrid, RampAndCalmWater) {
   SpectrumSpec spec;

@@ -44,12 +44,13 @@ MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
 }
 
 hydro::FluidPoint MorisonBeam::fluid_at(int k, std::size_t g, const Vec3& r, double t) const {
-  if (reuse_ <= 0.0) return ocean_->fluid(r, t);
+  // the beam's load uses the water's velocity and acceleration, not its dynamic pressure
+  if (reuse_ <= 0.0) return ocean_->fluid(r, t, false);
   KeptFluid& kept = kept_[static_cast<std::size_t>(k) * rule_.points.size() + g];
   if (kept.t == t && (r - kept.r).lpNorm<Eigen::Infinity>() <= reuse_) return kept.fluid;
   kept.t = t;
   kept.r = r;
-  kept.fluid = ocean_->fluid(r, t);
+  kept.fluid = ocean_->fluid(r, t, false);
   return kept.fluid;
 }
 
@@ -210,10 +211,13 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
           rp_[j] += h;
           rm_[j] -= h;
           // buoyancy is uniform where wet: left out, so the surface is no step
-          df_dr.col(j) =
-              (point_load(c, ocean_->fluid(rp_, state.t), rp, rdot, load_factor, false, false).f -
-               point_load(c, ocean_->fluid(rm_, state.t), rp, rdot, load_factor, false, false).f) /
-              (2.0 * h);
+          df_dr.col(j) = (point_load(c, ocean_->fluid(rp_, state.t, false), rp, rdot, load_factor,
+                                     false, false)
+                              .f -
+                          point_load(c, ocean_->fluid(rm_, state.t, false), rp, rdot, load_factor,
+                                     false, false)
+                              .f) /
+                         (2.0 * h);
         }
         add_shape_product(K, sh, sh, df_dr, -s.kq * dx);
       }

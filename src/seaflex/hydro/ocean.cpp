@@ -15,12 +15,12 @@ double Ocean::elevation(double x, double y, double t) const {
   return waves_.elevation(x, y, t);
 }
 
-FluidPoint Ocean::fluid(const Vec3& p, double t) const {
+FluidPoint Ocean::fluid(const Vec3& p, double t, bool pressure) const {
   const kinematics_timer::Scope timed;
   FluidPoint out;
   if (std::isfinite(depth_) && p.z() < -depth_) return out;
   if (has_waves()) {
-    const FluidKinematics k = waves_.kinematics(p, t);
+    const FluidKinematics k = waves_.kinematics(p, t, pressure);
     if (!k.wet) return out;
     out.velocity = k.velocity;
     out.acceleration = k.acceleration;

@@ -38,8 +38,9 @@ class Ocean {
   double elevation(double x, double y, double t) const;
   /// Fluid velocity and acceleration at p; zero (and wet = false) above the surface.
   /// The current applies below the surface; in a crest above z = 0 it takes its z = 0
-  /// value. Below the seabed nothing is wet.
-  FluidPoint fluid(const Vec3& p, double t) const;
+  /// value. Below the seabed nothing is wet. pressure = false: the dynamic pressure is not
+  /// needed (NaN when the grid skips it; WaveField::kinematics).
+  FluidPoint fluid(const Vec3& p, double t, bool pressure = true) const;
 
  private:
   double rho_, g_, depth_;

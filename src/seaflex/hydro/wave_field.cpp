@@ -86,8 +86,8 @@ FluidKinematics WaveField::airy(double x, double y, double z, double t) const {
   return out;
 }
 
-FluidKinematics WaveField::kinematics(const Vec3& p, double t) const {
-  if (grid_) return grid_->kinematics(p, t);
+FluidKinematics WaveField::kinematics(const Vec3& p, double t, bool pressure) const {
+  if (grid_) return grid_->kinematics(p, t, pressure);
   const double ramp = ramp_.factor(t);
   if (ramp == 0.0) {
     FluidKinematics calm;

@@ -58,8 +58,10 @@ class WaveField {
   /// ramp included (the ramp multiplies velocity, acceleration and pressure; the term
   /// ramp'(t) u of the acceleration is neglected, as in common practice). Above the instantaneous
   /// surface: all zero and wet = false. Points below the seabed (z < -depth) get the seabed values
-  /// (wet = true).
-  FluidKinematics kinematics(const Vec3& p, double t) const;
+  /// (wet = true). pressure = false: the caller does not need the dynamic pressure; the grid
+  /// (set_grid) then neither fills nor interpolates it and returns NaN for it (the exact sum
+  /// computes it anyway).
+  FluidKinematics kinematics(const Vec3& p, double t, bool pressure = true) const;
 
   /// The components as given to the constructor.
   const std::vector<WaveComponent>& components() const { return components_; }

@@ -6,6 +6,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace seaflex::hydro {
@@ -267,18 +268,21 @@ WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
   }
   col.values.assign(5 * J, 0.0);
   col.filled.assign((J + kBlock - 1) / kBlock, 0);
+  col.filled_p.assign(col.filled.size(), 0);
   ++started_;
   ++stored_;
   return col;
 }
 
-void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1) const {
+void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pressure) const {
   const std::size_t J = z_.size();
   const auto N = static_cast<Eigen::Index>(comps_.size());
   for (std::size_t blk = j0 / kBlock; blk <= j1 / kBlock; ++blk) {
-    if (col.filled[blk]) continue;
+    const bool kin = !col.filled[blk], pre = pressure && !col.filled_p[blk];
+    if (!kin && !pre) continue;
+    if (kin) ++blocks_;
     col.filled[blk] = 1;
-    ++blocks_;
+    if (pressure) col.filled_p[blk] = 1;
     // the exact sums at the block's levels, without the ramp (WaveField::airy), over the
     // components each level keeps (depth truncation): five dot products per level (Eigen's
     // vectorized reductions)
@@ -291,11 +295,13 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1) const {
           c_p(col.coef.data() + 4 * N, n);
       const std::size_t row = j * static_cast<std::size_t>(N);
       const CMap fh(fh_.data() + row, n), fv(fv_.data() + row, n), fp(fp_.data() + row, n);
-      col.values[j] = fh.dot(c_uh);
-      col.values[J + j] = fv.dot(c_uz);
-      col.values[2 * J + j] = fh.dot(c_ah);
-      col.values[3 * J + j] = fv.dot(c_az);
-      col.values[4 * J + j] = fp.dot(c_p);
+      if (kin) {
+        col.values[j] = fh.dot(c_uh);
+        col.values[J + j] = fv.dot(c_uz);
+        col.values[2 * J + j] = fh.dot(c_ah);
+        col.values[3 * J + j] = fv.dot(c_az);
+      }
+      if (pre) col.values[4 * J + j] = fp.dot(c_p);
     }
   }
 }
@@ -393,33 +399,37 @@ void WaveGrid::make_slices(const std::array<Column*, 16>& cols, const std::array
       sl.eta += wt[static_cast<std::size_t>(b)] * cols[static_cast<std::size_t>(4 * b + a)]->eta;
     sl.values.assign(5 * J, 0.0);
     sl.filled.assign((J + kBlock - 1) / kBlock, 0);
-    cache.bytes += 8 * (5 * J + 1) + sl.filled.size() + 64;
+    sl.filled_p.assign(sl.filled.size(), 0);
+    cache.bytes += 8 * (5 * J + 1) + 2 * sl.filled.size() + 64;
   }
 }
 
 void WaveGrid::fill_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
-                           const std::array<Slice*, 4>& sl, std::size_t j0) const {
+                           const std::array<Slice*, 4>& sl, std::size_t j0, bool pressure) const {
   const std::size_t J = z_.size();
   for (int a = 0; a < 4; ++a) {
     Slice& s = *sl[static_cast<std::size_t>(a)];
     for (std::size_t blk = j0 / kBlock; blk <= (j0 + 3) / kBlock; ++blk) {
-      if (s.filled[blk]) continue;
+      // the four kinematics values [0, 4) and the pressure [4, 5), each once
+      const std::size_t q0 = s.filled[blk] ? 4 : 0, q1 = pressure && !s.filled_p[blk] ? 5 : 4;
+      if (q0 >= q1) continue;
       const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
       for (int b = 0; b < 4; ++b) {
         Column& c = *cols[static_cast<std::size_t>(4 * b + a)];
-        fill_levels(c, lo, hi - 1);
+        fill_levels(c, lo, hi - 1, pressure);
         const double w = wt[static_cast<std::size_t>(b)];
-        for (std::size_t q = 0; q < 5; ++q)
+        for (std::size_t q = q0; q < q1; ++q)
           for (std::size_t j = lo; j < hi; ++j) s.values[q * J + j] += w * c.values[q * J + j];
       }
       s.filled[blk] = 1;
+      if (pressure) s.filled_p[blk] = 1;
     }
   }
 }
 
 WaveGrid::Outcome WaveGrid::evaluate_slices(const std::array<Slice*, 4>& sl,
                                             const std::array<double, 4>& ws, const Vec3& p,
-                                            double ramp, FluidKinematics& out,
+                                            double ramp, bool pressure, FluidKinematics& out,
                                             std::size_t& j0) const {
   const std::size_t J = z_.size();
   double eta = 0.0;
@@ -448,7 +458,9 @@ WaveGrid::Outcome WaveGrid::evaluate_slices(const std::array<Slice*, 4>& sl,
   j0 = static_cast<std::size_t>(
       std::clamp<std::ptrdiff_t>(j - 1, 0, static_cast<std::ptrdiff_t>(J) - 4));
   for (const Slice* s : sl)
-    if (!s->filled[j0 / kBlock] || !s->filled[(j0 + 3) / kBlock]) return Outcome::kFill;
+    if (!s->filled[j0 / kBlock] || !s->filled[(j0 + 3) / kBlock] ||
+        (pressure && (!s->filled_p[j0 / kBlock] || !s->filled_p[(j0 + 3) / kBlock])))
+      return Outcome::kFill;
   // 4-point Lagrange weights in z with the stored denominators
   const double* zn = z_.data() + j0;
   const double d0 = z_eval - zn[0], d1 = z_eval - zn[1], d2 = z_eval - zn[2], d3 = z_eval - zn[3];
@@ -456,16 +468,18 @@ WaveGrid::Outcome WaveGrid::evaluate_slices(const std::array<Slice*, 4>& sl,
   const std::array<double, 4> wz{d1 * d2 * d3 * den[0], d0 * d2 * d3 * den[1],
                                  d0 * d1 * d3 * den[2], d0 * d1 * d2 * den[3]};
   std::array<double, 5> v{};
+  const std::size_t values = pressure ? 5 : 4;
   for (std::size_t a = 0; a < 4; ++a) {
     const double* col = sl[a]->values.data() + j0;
-    for (std::size_t q = 0; q < 5; ++q) {
+    for (std::size_t q = 0; q < values; ++q) {
       const double* cq = col + q * J;
       v[q] += ws[a] * (wz[0] * cq[0] + wz[1] * cq[1] + wz[2] * cq[2] + wz[3] * cq[3]);
     }
   }
   out.velocity = ramp * Vec3(v[0] * cos_b_, v[0] * sin_b_, v[1]);
   out.acceleration = ramp * Vec3(v[2] * cos_b_, v[2] * sin_b_, v[3]);
-  out.dynamic_pressure = ramp * field_.rho() * field_.g() * v[4];
+  out.dynamic_pressure =
+      pressure ? ramp * field_.rho() * field_.g() * v[4] : std::numeric_limits<double>::quiet_NaN();
   out.wet = true;
   return Outcome::kDone;
 }
@@ -490,7 +504,7 @@ double WaveGrid::elevation(double x, double y, double t) const {
   return ramp * eta;
 }
 
-FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
+FluidKinematics WaveGrid::kinematics(const Vec3& p, double t, bool pressure) const {
   const double ramp = field_.ramp_factor(t);
   if (ramp == 0.0) {
     FluidKinematics calm;
@@ -505,17 +519,17 @@ FluidKinematics WaveGrid::kinematics(const Vec3& p, double t) const {
   FluidKinematics out;
   std::size_t j0 = 0;
   // the common case: this thread's slices at t hold the point's stations and levels
-  Outcome outcome = have ? evaluate_slices(sl, ws, p, ramp, out, j0) : Outcome::kFill;
+  Outcome outcome = have ? evaluate_slices(sl, ws, p, ramp, pressure, out, j0) : Outcome::kFill;
   if (outcome == Outcome::kFill) {
     const std::int64_t n0 = lattice_stencil(t, spec_.dt, wt);
     const std::unique_lock<std::shared_mutex> lock(mutex_);
     const auto* cols = stencil(m0, n0);
     if (!cols) return field_.kinematics(p, t);  // over the memory cap: exact
     if (!have) make_slices(*cols, wt, m0, cache, sl);
-    outcome = evaluate_slices(sl, ws, p, ramp, out, j0);
+    outcome = evaluate_slices(sl, ws, p, ramp, pressure, out, j0);
     if (outcome == Outcome::kFill) {
-      fill_slices(*cols, wt, sl, j0);
-      outcome = evaluate_slices(sl, ws, p, ramp, out, j0);
+      fill_slices(*cols, wt, sl, j0, pressure);
+      outcome = evaluate_slices(sl, ws, p, ramp, pressure, out, j0);
     }
   }
   // below the grid in deep water: the exact sum

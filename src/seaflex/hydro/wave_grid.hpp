@@ -10,8 +10,10 @@
 //   asked for (its elevation: the phase w t_n - k s_m + phase is the product of a time
 //   phasor e^{i (w t_n + phase)}, N complex products per time sample from the previous
 //   sample's, N sines and cosines at every 64th (kAnchor), and a station
-//   phasor e^{-i k s_m}, N once per station), and 5 N multiply-adds per level, filled by
-//   blocks of kBlock levels as points need them; each once per run. The cost per
+//   phasor e^{-i k s_m}, N once per station), and 4 N multiply-adds per level for the
+//   velocity and acceleration (N more for the pressure, only when a caller asks for it: a
+//   beam's Morison load does not), filled by blocks of kBlock levels as points need them;
+//   each once per run. The cost per
 //   evaluation (16 columns x 4 levels x 5 values) does not depend on N; the filling grows
 //   with N times the grid nodes the line visits (one new time sample per dt).
 // - Depth truncation: the components are kept sorted by wave number, and level z_j sums only
@@ -99,14 +101,15 @@ class WaveGrid {
 
   /// As WaveField::elevation, interpolated.
   double elevation(double x, double y, double t) const;
-  /// As WaveField::kinematics, interpolated (exact below the grid's deepest level).
-  FluidKinematics kinematics(const Vec3& p, double t) const;
+  /// As WaveField::kinematics, interpolated (exact below the grid's deepest level). With
+  /// pressure = false the dynamic pressure is neither filled nor interpolated (NaN).
+  FluidKinematics kinematics(const Vec3& p, double t, bool pressure = true) const;
 
   /// The levels z_j (m), from 0 down.
   const std::vector<double>& levels() const { return z_; }
   const WaveGridSpec& spec() const { return spec_; }
   /// Work done so far: columns started (N sines and cosines each) and blocks of kBlock levels
-  /// filled (N kBlock 5 multiply-adds each).
+  /// filled (N kBlock 4 multiply-adds each, 5 with the pressure).
   std::int64_t columns_started() const;
   /// Columns stored now, and the most that may be (spec().max_bytes).
   std::int64_t columns_stored() const;
@@ -129,7 +132,8 @@ class WaveGrid {
     // of f_h, f_h, f_v, f_v, f_p in u_h, du_h/dt, u_z, du_z/dt, p/(rho g)
     std::vector<double> coef;
     std::vector<double> values;
-    std::vector<char> filled;  // per block
+    std::vector<char> filled;    // per block: the velocity and acceleration
+    std::vector<char> filled_p;  // per block: the pressure (only when asked for)
   };
   struct Slot {
     std::int64_t n = INT64_MIN;
@@ -153,8 +157,9 @@ class WaveGrid {
 
   // the column (m, n), with its elevation and coefficients; caller holds mutex_
   Column& column(std::int64_t m, std::int64_t n) const;
-  // fills the blocks of levels j0 .. j1 of col; caller holds mutex_
-  void fill_levels(Column& col, std::size_t j0, std::size_t j1) const;
+  // fills the blocks of levels j0 .. j1 of col (the pressure too when asked); caller holds
+  // mutex_
+  void fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pressure) const;
   // the 16 columns (m0 + a, n0 + b) at [4 b + a], or nullptr when storing the missing ones
   // would exceed max_columns_; caller holds mutex_ exclusively. Remembered per thread.
   const std::array<Column*, 16>* stencil(std::int64_t m0, std::int64_t n0) const;
@@ -173,7 +178,8 @@ class WaveGrid {
   struct Slice {
     double eta = 0.0;
     std::vector<double> values;  // [q J + j], as Column::values
-    std::vector<char> filled;    // per block of levels
+    std::vector<char> filled;    // per block of levels: the velocity and acceleration
+    std::vector<char> filled_p;  // per block of levels: the pressure
   };
   // this thread's slices at the time t of the grid `grid`, by station
   struct SliceCache {
@@ -196,14 +202,16 @@ class WaveGrid {
   // levels are filled by fill_slices); caller holds mutex_ exclusively
   void make_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
                    std::int64_t m0, SliceCache& cache, std::array<Slice*, 4>& out) const;
-  // the blocks of levels j0 .. j0+3 of the four slices, filling the columns' first; caller
-  // holds mutex_ exclusively
+  // the blocks of levels j0 .. j0+3 of the four slices (the pressure too when asked), filling
+  // the columns' first; caller holds mutex_ exclusively
   void fill_slices(const std::array<Column*, 16>& cols, const std::array<double, 4>& wt,
-                   const std::array<Slice*, 4>& sl, std::size_t j0) const;
-  // the point p from the four slices: kDone (out set), kExact (below the grid), kFill (a
-  // level block is missing: j0 set to the first of the 4 levels it needs)
+                   const std::array<Slice*, 4>& sl, std::size_t j0, bool pressure) const;
+  // the point p from the four slices (its pressure when asked, else NaN): kDone (out set),
+  // kExact (below the grid), kFill (a level block is missing: j0 set to the first of the 4
+  // levels it needs)
   Outcome evaluate_slices(const std::array<Slice*, 4>& sl, const std::array<double, 4>& ws,
-                          const Vec3& p, double ramp, FluidKinematics& out, std::size_t& j0) const;
+                          const Vec3& p, double ramp, bool pressure, FluidKinematics& out,
+                          std::size_t& j0) const;
   Slot& slot_of(std::int64_t n) const {
     return slots_[static_cast<std::size_t>(((n % kSlots) + kSlots) % kSlots)];
   }
