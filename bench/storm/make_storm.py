@@ -230,11 +230,11 @@ def storm_model(n, components=200, kinematics="grid", duration=10830.0, fmt="hdf
             kin_comment += ("\n    grid: {ds: 0.5, dt: 0.2}                 # within 1e-3 of the"
                             " RMS velocity (defaults 0.25 m, 0.1 s: 1e-4)")
     name = f"storm_sc_n{n}" if spread else f"storm_n{n}"
-    # Morison Gauss points: 3 on 3 m elements, 2 on elements of 1 m or less (measured:
-    # docs/performance.md, "Morison Gauss points" and "Two Morison Gauss points on 0.3 m
+    # Morison Gauss points: 3 on 3 m elements, 1 (the midpoint) on elements of 1 m or less
+    # (measured: docs/performance.md, "Morison Gauss points" and "One Morison point on 0.3 m
     # elements")
     length = (depth + top_z) / n  # the riser runs from the seabed to top_z
-    gauss = 3 if length > 1.0 else 2
+    gauss = 3 if length > 1.0 else 1
     if gauss == 3:
         gauss_comment = (
             "  # 3 Gauss points per element for the Morison load (default 5): on these 3 m\n"
@@ -242,10 +242,12 @@ def storm_model(n, components=200, kinematics="grid", duration=10830.0, fmt="hdf
             "  # faster (docs/performance.md, \"Morison Gauss points\")")
     else:
         gauss_comment = (
-            f"  # 2 Gauss points per element for the Morison load (default 5): on these {length:g} m\n"
-            "  # elements (the sea's shortest wave, at 5 times the peak frequency, is 6.2 m long) the\n"
-            "  # 330 s storm's statistics move by at most 8.5e-9 against 3 points, with 11 % fewer\n"
-            "  # instructions (docs/performance.md, \"Two Morison Gauss points on 0.3 m elements\")")
+            f"  # 1 Gauss point (the midpoint) per element for the Morison load (default 5): these\n"
+            f"  # {length:g} m elements are a twentieth of the sea's shortest wave (6.2 m, at 5 times the\n"
+            "  # peak frequency), so one load evaluation per element, as a lumped-mass line has one per\n"
+            "  # node; the statistics move by at most 3.9e-6 (330 s) and 1.6e-5 (short-crested, 60 s)\n"
+            "  # against 2 points, with 15 % fewer instructions (docs/performance.md, \"One Morison\n"
+            "  # point on 0.3 m elements\")")
     return TEMPLATE.format(
         variant=", short-crested" if spread else "", sea_comment=sea, name=name,
         bench_duration=60 if spread else 600, spreading=spreading,

@@ -215,7 +215,7 @@ WaveGrid::Column& WaveGrid::column(std::int64_t m, std::int64_t n) const {
     // e^{i w dt}: each sample's phasors are the same chain of products from its anchor
     // whichever order the samples are made in (from sample n - 1 when its slot holds it,
     // else from the anchor), so the values do not depend on the evaluation order (a restart,
-    // the thread); the chain's round-off is at most kAnchor ulps
+    // the thread); the chain's round-off grows to a few kAnchor ulps at most
     const std::int64_t anchor = n - ((n % kAnchor) + kAnchor) % kAnchor;
     const Slot& before = slot_of(n - 1);
     std::int64_t from = anchor;
@@ -284,8 +284,8 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pre
     col.filled[blk] = 1;
     if (pressure) col.filled_p[blk] = 1;
     // the exact sums at the block's levels, without the ramp (WaveField::airy), over the
-    // components each level keeps (depth truncation): five dot products per level (Eigen's
-    // vectorized reductions)
+    // components each level keeps (depth truncation): four dot products per level, a fifth
+    // for the pressure when asked (Eigen's vectorized reductions)
     const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
     using CMap = Eigen::Map<const Eigen::VectorXd>;
     for (std::size_t j = lo; j < hi; ++j) {
