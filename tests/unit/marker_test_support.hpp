@@ -60,17 +60,23 @@ class Rng {
 
 using StateFn = std::function<VecX(const State&)>;
 
-// d f / d q[dofs[j]] by central differences
-inline MatX fd_dq(const State& s, const std::vector<Index>& dofs, const StateFn& f) {
+// d f / d x[dofs[j]] by central differences, x the state's positions q or velocities v
+inline MatX fd_central(const State& s, const std::vector<Index>& dofs, const StateFn& f,
+                       VecX State::*x) {
   const VecX f0 = f(s);
   MatX D(f0.size(), static_cast<Index>(dofs.size()));
   for (std::size_t j = 0; j < dofs.size(); ++j) {
     State sp = s, sm = s;
-    sp.q[dofs[j]] += kH;
-    sm.q[dofs[j]] -= kH;
+    (sp.*x)[dofs[j]] += kH;
+    (sm.*x)[dofs[j]] -= kH;
     D.col(static_cast<Index>(j)) = (f(sp) - f(sm)) / (2.0 * kH);
   }
   return D;
+}
+
+// d f / d q[dofs[j]] by central differences
+inline MatX fd_dq(const State& s, const std::vector<Index>& dofs, const StateFn& f) {
+  return fd_central(s, dofs, f, &State::q);
 }
 
 // d f / d q[dofs[j]] by the fourth-order central difference, for energies: near a
@@ -94,15 +100,7 @@ inline MatX fd4_dq(const State& s, const std::vector<Index>& dofs, const StateFn
 
 // d f / d v[dofs[j]] by central differences
 inline MatX fd_dv(const State& s, const std::vector<Index>& dofs, const StateFn& f) {
-  const VecX f0 = f(s);
-  MatX D(f0.size(), static_cast<Index>(dofs.size()));
-  for (std::size_t j = 0; j < dofs.size(); ++j) {
-    State sp = s, sm = s;
-    sp.v[dofs[j]] += kH;
-    sm.v[dofs[j]] -= kH;
-    D.col(static_cast<Index>(j)) = (f(sp) - f(sm)) / (2.0 * kH);
-  }
-  return D;
+  return fd_central(s, dofs, f, &State::v);
 }
 
 // d/dt f(q + t v, v) at t = 0, v held
