@@ -161,6 +161,69 @@ TEST(RaoMotion, IrregularSeaVarianceEqualsSpectralIntegral) {
   }
 }
 
+// sample() sums the components with real multiply-adds over amplitudes stored by component
+// (hydro/rao_motion.cpp); here the same motion is summed term by term in std::complex from
+// complex_amplitude(k), x_j = Re{c_j e^{iwt}}, x' = Re{i w c_j e^{iwt}}, x'' = Re{-w^2 c_j
+// e^{iwt}}, over the 3-hour storm's times (large phases w t), all six degrees of freedom with
+// complex RAOs. To 1e-13 of sum_k |c_jk| (w, w^2 for the derivatives): round-off of 200 terms in
+// another order. And the derivatives against central differences of the displacement
+// (step 1e-3 s: truncation (w dt)^2 / 6 < 2e-6 of the largest term's w |c|, round-off 1e-13 / dt).
+TEST(RaoMotion, SampleEqualsTheComplexSumTermByTerm) {
+  SpectrumSpec spec;
+  spec.hs = 6.0;
+  spec.tp = 10.0;
+  spec.components = 200;
+  spec.seed = 3;
+  const auto comps = irregular_components(spec, 290.0, 9.81);
+  RaoTable table;
+  table.data.has_excitation = true;
+  table.data.headings = {0.0};
+  table.data.excitation.resize(1);
+  for (int i = 0; i <= 400; ++i) {
+    const double w = 0.1 + 3.9 * i / 400.0;
+    table.data.omega.push_back(w);
+    Vec6c H;
+    for (int j = 0; j < 6; ++j)
+      H[j] = (0.3 + 0.2 * j) * oscillator(w * (1.0 + 0.1 * j)) * std::polar(1.0, 0.4 * j);
+    table.data.excitation[0].push_back(H);
+  }
+  const RaoMotion m(table, comps, Vec3(3.0, -2.0, -5.0), RaoPhaseReference::kRaoOrigin);
+  std::vector<double> omega;
+  for (const auto& c : comps)
+    if (c.amplitude != 0.0) omega.push_back(c.omega);
+  ASSERT_EQ(omega.size(), 200u);
+  Vec6 scale0 = Vec6::Zero(), scale1 = Vec6::Zero(), scale2 = Vec6::Zero();
+  for (std::size_t k = 0; k < omega.size(); ++k)
+    for (int j = 0; j < 6; ++j) {
+      const double a = std::abs(m.complex_amplitude(k)[j]);
+      scale0[j] += a;
+      scale1[j] += omega[k] * a;
+      scale2[j] += omega[k] * omega[k] * a;
+    }
+  for (const double t : {0.0, 31.7, 1234.5, 5400.05, 10829.9}) {
+    Vec6 x = Vec6::Zero(), xt = Vec6::Zero(), xtt = Vec6::Zero();
+    for (std::size_t k = 0; k < omega.size(); ++k) {
+      const std::complex<double> e = std::polar(1.0, omega[k] * t);
+      for (int j = 0; j < 6; ++j) {
+        const std::complex<double> z = m.complex_amplitude(k)[j] * e;
+        x[j] += z.real();
+        xt[j] += (std::complex<double>(0.0, omega[k]) * z).real();
+        xtt[j] += -omega[k] * omega[k] * z.real();
+      }
+    }
+    const MotionSample s = m.sample(t);
+    const double dt = 1e-3;
+    const MotionSample sp = m.sample(t + dt), sm = m.sample(t - dt);
+    for (int j = 0; j < 6; ++j) {
+      EXPECT_NEAR(s.x[j], x[j], 1e-13 * scale0[j]) << "t " << t << " dof " << j;
+      EXPECT_NEAR(s.x_t[j], xt[j], 1e-13 * scale1[j]) << "t " << t << " dof " << j;
+      EXPECT_NEAR(s.x_tt[j], xtt[j], 1e-13 * scale2[j]) << "t " << t << " dof " << j;
+      EXPECT_NEAR((sp.x[j] - sm.x[j]) / (2 * dt), s.x_t[j], 2e-6 * scale1[j]) << "t " << t;
+      EXPECT_NEAR((sp.x_t[j] - sm.x_t[j]) / (2 * dt), s.x_tt[j], 2e-6 * scale2[j]) << "t " << t;
+    }
+  }
+}
+
 // WAMIT .4: rotations made dimensional with ULEN, Re/Im used; lag flips the phase
 TEST(RaoMotion, WamitFourFile) {
   std::string text = " PER BETA I MOD PHA RE IM\n";

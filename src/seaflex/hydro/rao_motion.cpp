@@ -16,6 +16,10 @@ RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& co
     if (reference == RaoPhaseReference::kRaoOrigin)
       phase -= w.k * (origin.x() * std::cos(w.direction) + origin.y() * std::sin(w.direction));
     terms_.push_back({w.omega, H * std::polar(w.amplitude, phase)});
+    for (int j = 0; j < 6; ++j) {
+      re_.push_back(terms_.back().c[j].real());
+      im_.push_back(terms_.back().c[j].imag());
+    }
   }
 }
 
@@ -25,15 +29,18 @@ MotionSample RaoMotion::sample(double t) const {
     if (t == memo_t_) return memo_;
   }
   MotionSample m;
-  for (const Term& term : terms_) {
-    const std::complex<double> e = std::polar(1.0, term.omega * t);
-    const double w = term.omega;
+  for (std::size_t k = 0; k < terms_.size(); ++k) {
+    const double w = terms_[k].omega;
+    const double c = std::cos(w * t), s = std::sin(w * t);
+    const double* re = &re_[6 * k];
+    const double* im = &im_[6 * k];
     for (int j = 0; j < 6; ++j) {
-      const std::complex<double> z = term.c[j] * e;
-      // x = Re{c e^{iwt}}, x' = Re{i w c e^{iwt}} = -w Im{.}, x'' = -w^2 x
-      m.x[j] += z.real();
-      m.x_t[j] -= w * z.imag();
-      m.x_tt[j] -= w * w * z.real();
+      // z = c_j e^{iwt}; x = Re{z}, x' = Re{i w z} = -w Im{z}, x'' = -w^2 x
+      const double zr = re[j] * c - im[j] * s;
+      const double zi = re[j] * s + im[j] * c;
+      m.x[j] += zr;
+      m.x_t[j] -= w * zi;
+      m.x_tt[j] -= w * w * zr;
     }
   }
   const std::lock_guard<std::mutex> lock(memo_mutex_);

@@ -39,6 +39,9 @@ class RaoMotion : public Motion {
     Vec6c c;
   };
   std::vector<Term> terms_;
+  // the same amplitudes by component, real and imaginary parts apart (6 each), for sample()'s
+  // loop of real multiply-adds (std::complex products check for NaN and do not vectorize)
+  std::vector<double> re_, im_;
   // the last sample: the constraints ask for the same t several times per Newton iteration,
   // and each sample costs a sine and cosine per wave component (issue 21)
   mutable std::mutex memo_mutex_;
