@@ -382,8 +382,11 @@ void load_hull(const YAML::Node& node, const std::string& path, const RigidBody&
     } else {
       std::string given;
       for (const auto& kv : node[i]) {
-        given += (given.empty() ? "" : ", ") + kv.first.as<std::string>();
-        item.has(kv.first.as<std::string>());
+        // a key that is not a plain name (a mapping or a list) has no text to show
+        given +=
+            (given.empty() ? "" : ", ") +
+            (kv.first.IsScalar() ? kv.first.Scalar() : std::string("a key that is not a name"));
+        item.has(kv.first.Scalar());
       }
       ctx.diag.error(
           node[i].Mark(), p,
@@ -564,7 +567,7 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
     MapReader pr(ctx.diag, probes, env.key_path("wave_probes"));
     if (pr.valid())
       for (const auto& kv : probes) {
-        const std::string name = kv.first.as<std::string>();
+        const std::string name = kv.first.Scalar();
         pr.has(name);
         if (const std::string problem = name_problem(name, "wave probe", "wave.eta.<name>");
             !problem.empty()) {
@@ -593,7 +596,7 @@ void load_hydrodynamics(const YAML::Node& node, LoadContext& ctx) {
     return;
   }
   for (const auto& kv : node) {
-    const std::string name = kv.first.as<std::string>();
+    const std::string name = kv.first.Scalar();
     top.has(name);
     const std::string path = top.key_path(name);
     const Body* body = ctx.system.find_body(name);
