@@ -107,6 +107,49 @@ TEST(SystemJacobians, MassBlockAndEnergies) {
   EXPECT_NEAR(sys->energies(s).potential, mass * 9.81 * z_cm, 1e-9 * mass);
 }
 
+// Gravity on a beam of two sections and unequal elements: the force the beam adds (nodal
+// weights summed once, ancf_beam.cpp) is minus the gradient of its potential, which sums thesis
+// eq. (127) element by element (V = -Q_g . q: linear in q, so the central difference is exact
+// up to round-off, 1e-12 of |Q|), and its translational part adds up to the weight m g.
+TEST(SystemJacobians, BeamGravityIsMinusTheGradientOfItsPotential) {
+  BeamGeometry geo;
+  const Vec3 dir = Vec3(3, 1, -2).normalized();
+  double s = 0.0;
+  for (double l : {0.0, 1.5, 0.7, 2.2, 1.1, 0.4}) {
+    s += l;
+    geo.positions.push_back(s * dir);
+    geo.slopes.push_back(dir);
+    if (l > 0.0) geo.element_lengths.push_back(l);
+  }
+  const std::vector<BeamSection> sections{BeamSection::pipe(0.3, 0.25, 2.1e11, 7850),
+                                          BeamSection::pipe(0.5, 0.1, 2.1e11, 3000)};
+  System sys;
+  auto& beam = static_cast<AncfBeam&>(sys.add_body(std::make_unique<AncfBeam>(
+      "beam", geo, sections, std::vector<int>{0, 1, 1, 0, 1}, BeamOptions{})));
+  sys.finalize();
+  State st = sys.initial_state();
+  st.q += 0.1 * VecX::Random(st.q.size());
+  const Vec3 g(0.3, -0.2, -9.81);
+  VecX Q = VecX::Zero(st.q.size());
+  AssemblyTarget target;
+  target.forces = &Q;
+  beam.add_gravity(g, st, target);
+  for (Index j = 0; j < st.q.size(); ++j) {
+    State sp = st, sm = st;
+    sp.q[j] += 0.5;
+    sm.q[j] -= 0.5;
+    const double dV = beam.gravity_potential(g, sp) - beam.gravity_potential(g, sm);
+    EXPECT_NEAR(Q[j], -dV, 1e-12 * Q.norm()) << sys.coordinate_name(j);
+  }
+  double mass = 0.0;
+  const std::vector<int> section_of{0, 1, 1, 0, 1};
+  for (std::size_t el = 0; el < geo.element_lengths.size(); ++el)
+    mass += sections[section_of[el]].mass_per_length() * geo.element_lengths[el];
+  Vec3 total = Vec3::Zero();
+  for (Index k = 0; k < Q.size(); k += 6) total += Q.segment<3>(k);
+  EXPECT_LT((total - mass * g).norm(), 1e-12 * mass * g.norm());
+}
+
 TEST(SystemJacobians, NamesCoordinatesAndRows) {
   auto sys = make_system(ancf_cable::AxialModel::kExact, ancf_cable::BendingModel::kExact);
   EXPECT_EQ(sys->coordinate_name(0), "beam.n0.r.x");

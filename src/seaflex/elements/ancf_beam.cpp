@@ -98,6 +98,17 @@ AncfBeam::AncfBeam(std::string name, BeamGeometry geometry, std::vector<BeamSect
     }
     kernel_of_.push_back(found);
   }
+  // gravity's nodal weights: int_0^l rho A S dx = rho A [l/2, l^2/12, l/2, -l^2/12] per element
+  // (thesis eq. 127), summed at the shared nodes once here instead of at every evaluation
+  gravity_r_.assign(element_lengths_.size() + 1, 0.0);
+  gravity_s_.assign(element_lengths_.size() + 1, 0.0);
+  for (std::size_t el = 0; el < element_lengths_.size(); ++el) {
+    const double m = sections_[section_of_[el]].mass_per_length(), l = element_lengths_[el];
+    gravity_r_[el] += 0.5 * m * l;
+    gravity_s_[el] += m * l * l / 12.0;
+    gravity_r_[el + 1] += 0.5 * m * l;
+    gravity_s_[el + 1] -= m * l * l / 12.0;
+  }
   // elements k and k + 1 share node k + 1: even and odd elements share nothing
   std::vector<int> color(element_lengths_.size());
   for (std::size_t el = 0; el < color.size(); ++el) color[el] = static_cast<int>(el % 2);
@@ -166,10 +177,12 @@ void AncfBeam::assemble(const State& state, AssemblyTarget& target) const {
 
 void AncfBeam::add_gravity(const Vec3& g, const State&, AssemblyTarget& target) const {
   if (!target.forces) return;
-  // thesis eq. (175): uniform load rho A g per unit length through eq. (127)
-  for (int el = 0; el < num_elements(); ++el)
-    target.forces->segment<12>(node_index(el)) +=
-        ancf_cable::uniform_load(section(el).mass_per_length() * g, element_lengths_[el]);
+  // thesis eq. (175): uniform load rho A g per unit length through eq. (127), by node
+  for (std::size_t i = 0; i < gravity_r_.size(); ++i) {
+    const Index at = node_index(static_cast<int>(i));
+    target.forces->segment<3>(at) += gravity_r_[i] * g;
+    target.forces->segment<3>(at + 3) += gravity_s_[i] * g;
+  }
 }
 
 double AncfBeam::gravity_potential(const Vec3& g, const State& state) const {

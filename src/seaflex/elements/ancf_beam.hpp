@@ -129,7 +129,10 @@ class AncfBeam : public Body {
   std::vector<ancf_cable::CableElasticity> kernels_;  // one per distinct (length, section)
   std::vector<ancf_cable::Mat12> masses_;             // per distinct (length, section)
   std::vector<int> kernel_of_;                        // element -> kernel
-  std::vector<math::BlockId> blocks_;                 // element -> matrix block
+  // the weights of a uniform load at each node (thesis eq. 127 summed over the elements that
+  // share it): Q_r = gravity_r_[i] g, Q_r' = gravity_s_[i] g (gravity is constant in q)
+  std::vector<double> gravity_r_, gravity_s_;
+  std::vector<math::BlockId> blocks_;  // element -> matrix block
   ElementColoring coloring_;
 };
 

@@ -253,13 +253,21 @@ void GeneralizedAlpha::update_multipliers(const Dae& dae, State& state) {
   if (!started_) start(dae, state);
 }
 
-void GeneralizedAlpha::update_iterate(const State& state_n, double h) {
+void GeneralizedAlpha::prepare_iterate(const State& state_n, double h) {
   const double am = s_.alpha_m, af = s_.alpha_f;
-  // Arnold & Bruls (2007) eq. (7)-(9)
-  abar_ = ((1.0 - af) * a_ + af * a_n_ - am * abar_n_) / (1.0 - am);
-  trial_.q = state_n.q + h * state_n.v + (h * h * (0.5 - s_.beta)) * abar_n_ +
-             (h * h * s_.beta) * abar_ + corr_;
-  trial_.v = state_n.v + (h * (1.0 - s_.gamma)) * abar_n_ + (h * s_.gamma) * abar_;
+  // Arnold & Bruls (2007) eq. (7)-(9) without the terms in a_{n+1} (update_iterate)
+  abar_base_ = (af * a_n_ - am * abar_n_) / (1.0 - am);
+  q_base_ = state_n.q + h * state_n.v + (h * h * (0.5 - s_.beta)) * abar_n_;
+  v_base_ = state_n.v + (h * (1.0 - s_.gamma)) * abar_n_;
+}
+
+void GeneralizedAlpha::update_iterate(double h) {
+  // Arnold & Bruls (2007) eq. (7)-(9): abar = ((1 - af) a + af a_n - am abar_n) / (1 - am),
+  // q = q_n + h v_n + h^2 ((1/2 - beta) abar_n + beta abar) (+ the projection's correction),
+  // v = v_n + h ((1 - gamma) abar_n + gamma abar), the terms without a from prepare_iterate
+  abar_ = ((1.0 - s_.alpha_f) / (1.0 - s_.alpha_m)) * a_ + abar_base_;
+  trial_.q = q_base_ + (h * h * s_.beta) * abar_ + corr_;
+  trial_.v = v_base_ + (h * s_.gamma) * abar_;
 }
 
 void GeneralizedAlpha::predict_coasting() {
@@ -299,8 +307,7 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
       if (it.row() < n_) out[it.row()] += it.value() * a[j];
 }
 
-void GeneralizedAlpha::project_predictor(const Dae& dae, const State& state, double h,
-                                         double a_per_v, double q_per_a) {
+void GeneralizedAlpha::project_predictor(const Dae& dae, double h, double a_per_v, double q_per_a) {
   // the predicted velocities onto C_q v + C_t = 0 and then the positions onto C = 0, both
   // along R = C_q(q_n)^T (the projection's own directions): dv = R eta with
   // C_q R eta = -Cdot, made through the accelerations (dv/da = gamma'/beta'), then
@@ -312,7 +319,7 @@ void GeneralizedAlpha::project_predictor(const Dae& dae, const State& state, dou
   DaeRequest req;
   req.forces = false;
   req.constraint_jacobian = dae.supports_constraint_jacobian();
-  update_iterate(state, h);
+  update_iterate(h);
   instrumented::evaluate(dae, trial_, req, eval_, stats_);
   eta_ = projection_solver_.solve(-eval_.Cdot);
   dy_.noalias() = constraint_jacobian_.transpose() * eta_;
@@ -392,6 +399,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   };
   trial_ = state;
   trial_.t = state.t + h;
+  prepare_iterate(state, h);
   // predictor: the accelerations and multipliers extrapolated from the last two steps
   // (see the file header; the last step's values at the first step and after a rejected
   // one); when a stale matrix drives the iterate away from it (a sudden load, a snap) the
@@ -412,7 +420,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   }
   if (index2) {
     try {
-      project_predictor(dae, state, h, bp / gp, 1.0 / bp);
+      project_predictor(dae, h, bp / gp, 1.0 / bp);
     } catch (const SolverError& e) {
       return fail(e.what());
     }
@@ -457,7 +465,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     }
     ++report.iterations;
     ++stats_.iterations;
-    update_iterate(state, h);
+    update_iterate(h);
     DaeRequest req;
     req.reaction_forces = m_ > 0;
     const bool refresh = want_fresh || !newton_solver_.factorized();
@@ -602,7 +610,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     if (converged) break;
     previous = norm;
   }
-  update_iterate(state, h);
+  update_iterate(h);
   // the constraints at the accepted positions (cheap: no forces, no matrix); with index 2
   // also their Jacobian, the next step's projection R = C_q(q_{n+1})^T
   if (index2) {

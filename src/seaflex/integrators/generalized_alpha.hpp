@@ -163,8 +163,11 @@ class GeneralizedAlpha : public Integrator {
   void prepare(const Dae& dae);
   // the iterate a_ for which q_{n+1} = q_n + h v_n (abar_{n+1} = -(1/2 - beta)/beta abar_n)
   void predict_coasting();
-  // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n
-  void update_iterate(const State& state_n, double h);
+  // the parts of abar_{n+1}, q_{n+1}, v_{n+1} that do not depend on a_{n+1}, once per step
+  void prepare_iterate(const State& state_n, double h);
+  // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n and step h
+  // given to prepare_iterate (one pass over the coordinates: the iterations' vector work)
+  void update_iterate(double h);
   // M a: from the stored constant mass matrix, from eval_ (in_eval: assembled with km = 1
   // alone in the same pass as the forces), or from a mass-only evaluation
   void mass_times(const Dae& dae, const State& state, const VecX& a, bool in_eval, VecX& out);
@@ -173,8 +176,7 @@ class GeneralizedAlpha : public Integrator {
   /// Index 2: the predictor's velocities and positions projected onto the constraints
   /// (a_per_v = beta'/gamma', the acceleration change per velocity change; q_per_a = 1/beta',
   /// the position change per acceleration change).
-  void project_predictor(const Dae& dae, const State& state, double h, double a_per_v,
-                         double q_per_a);
+  void project_predictor(const Dae& dae, double h, double a_per_v, double q_per_a);
   void prepare_projection(const Dae& dae, const State& state);
 
   GeneralizedAlphaSettings s_;
@@ -202,6 +204,7 @@ class GeneralizedAlpha : public Integrator {
   // index 2: the projection term R eta of q_{n+1}, R = C_q(q_n)^T, its update, and
   // C_q(q_n) C_q(q_n)^T factored once per step
   VecX corr_, dy_, eta_, predicted_C_;
+  VecX abar_base_, q_base_, v_base_;  // prepare_iterate's parts
   DaeEval projection_eval_;
   SpMat constraint_jacobian_;
   // C_q C_q^T: up to settings.dense_projection_rows rows summed into projection_dense_ and
