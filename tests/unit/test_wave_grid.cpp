@@ -126,7 +126,8 @@ TEST(WaveGrid, MatchesExactSumBetweenNodesWithStretching) {
 
 // The coarser grid of the storm benchmark files (bench/storm: ds 0.5 m, dt 0.2 s, levels growing
 // by dz_growth 0.2 of the depth instead of 0.1; docs/performance.md "The storm's grid spacings"
-// and "Levels twice as sparse at depth"). The time spacing sets the error:
+// and "Two Morison points on 3 m elements, sparser levels and the RAO sum"). The time spacing
+// sets the error:
 // cubic interpolation's per-component bound 0.0234 (w dt)^4 of the amplitude is 3.6e-3 for
 // the shortest component (w = 3.14 rad/s) but 6e-6 for the peak's (w = 0.63 rad/s), which
 // carries the energy. Documented: 1e-3 of the RMS velocity, elevation and pressure and 3e-3 of
@@ -134,7 +135,7 @@ TEST(WaveGrid, MatchesExactSumBetweenNodesWithStretching) {
 // velocity 6.4e-4, acceleration 1.7e-3, pressure 1.9e-4 (with ds 1 m and dt 0.4 s: velocity
 // 1.2e-2, acceleration 2.7e-2, which is why the files do not go coarser). The levels' growth
 // 0.2 leaves these figures as they were with 0.1 (velocity 6.42e-4 against 6.44e-4); 0.3 would
-// not (velocity 1.1e-3, pressure 7.4e-4).
+// not (velocity 1.1e-3, over the bound; pressure 7.4e-4).
 TEST(WaveGrid, StormBenchmarkSpacingsWithinTheirDocumentedError) {
   const WaveField exact = storm(290.0, true);
   WaveGridSpec spec;

@@ -1,6 +1,7 @@
 #include "seaflex/hydro/rao_motion.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace seaflex::hydro {
 
@@ -15,12 +16,20 @@ RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& co
     double phase = w.phase;
     if (reference == RaoPhaseReference::kRaoOrigin)
       phase -= w.k * (origin.x() * std::cos(w.direction) + origin.y() * std::sin(w.direction));
-    terms_.push_back({w.omega, H * std::polar(w.amplitude, phase)});
+    const Vec6c c = H * std::polar(w.amplitude, phase);
+    omega_.push_back(w.omega);
     for (int j = 0; j < 6; ++j) {
-      re_.push_back(terms_.back().c[j].real());
-      im_.push_back(terms_.back().c[j].imag());
+      re_.push_back(c[j].real());
+      im_.push_back(c[j].imag());
     }
   }
+}
+
+Vec6c RaoMotion::complex_amplitude(std::size_t k) const {
+  if (k >= omega_.size()) throw std::out_of_range("RaoMotion::complex_amplitude");
+  Vec6c c;
+  for (int j = 0; j < 6; ++j) c[j] = {re_[6 * k + j], im_[6 * k + j]};
+  return c;
 }
 
 MotionSample RaoMotion::sample(double t) const {
@@ -29,8 +38,8 @@ MotionSample RaoMotion::sample(double t) const {
     if (t == memo_t_) return memo_;
   }
   MotionSample m;
-  for (std::size_t k = 0; k < terms_.size(); ++k) {
-    const double w = terms_[k].omega;
+  for (std::size_t k = 0; k < omega_.size(); ++k) {
+    const double w = omega_[k];
     const double c = std::cos(w * t), s = std::sin(w * t);
     const double* re = &re_[6 * k];
     const double* im = &im_[6 * k];

@@ -31,17 +31,13 @@ class RaoMotion : public Motion {
   MotionSample sample(double t) const override;
 
   /// The complex amplitude H A of component k (x_j = Re{c_j e^{i w t}}).
-  const Vec6c& complex_amplitude(std::size_t k) const { return terms_.at(k).c; }
+  Vec6c complex_amplitude(std::size_t k) const;
 
  private:
-  struct Term {
-    double omega;
-    Vec6c c;
-  };
-  std::vector<Term> terms_;
-  // the same amplitudes by component, real and imaginary parts apart (6 each), for sample()'s
-  // loop of real multiply-adds (std::complex products check for NaN and do not vectorize)
-  std::vector<double> re_, im_;
+  // per component: its frequency, and its amplitudes' real and imaginary parts apart (6 each),
+  // for sample()'s loop of real multiply-adds (std::complex products check for NaN and do not
+  // vectorize)
+  std::vector<double> omega_, re_, im_;
   // the last sample: the constraints ask for the same t several times per Newton iteration,
   // and each sample costs a sine and cosine per wave component (issue 21)
   mutable std::mutex memo_mutex_;

@@ -259,9 +259,11 @@ void GeneralizedAlpha::prepare_iterate(const State& state_n, double h) {
   abar_base_ = (af * a_n_ - am * abar_n_) / (1.0 - am);
   q_base_ = state_n.q + h * state_n.v + (h * h * (0.5 - s_.beta)) * abar_n_;
   v_base_ = state_n.v + (h * (1.0 - s_.gamma)) * abar_n_;
+  iterate_h_ = h;
 }
 
-void GeneralizedAlpha::update_iterate(double h) {
+void GeneralizedAlpha::update_iterate() {
+  const double h = iterate_h_;
   // Arnold & Bruls (2007) eq. (7)-(9): abar = ((1 - af) a + af a_n - am abar_n) / (1 - am),
   // q = q_n + h v_n + h^2 ((1/2 - beta) abar_n + beta abar) (+ the projection's correction),
   // v = v_n + h ((1 - gamma) abar_n + gamma abar), the terms without a from prepare_iterate
@@ -307,7 +309,7 @@ void GeneralizedAlpha::mass_times(const Dae& dae, const State& state, const VecX
       if (it.row() < n_) out[it.row()] += it.value() * a[j];
 }
 
-void GeneralizedAlpha::project_predictor(const Dae& dae, double h, double a_per_v, double q_per_a) {
+void GeneralizedAlpha::project_predictor(const Dae& dae, double a_per_v, double q_per_a) {
   // the predicted velocities onto C_q v + C_t = 0 and then the positions onto C = 0, both
   // along R = C_q(q_n)^T (the projection's own directions): dv = R eta with
   // C_q R eta = -Cdot, made through the accelerations (dv/da = gamma'/beta'), then
@@ -319,7 +321,7 @@ void GeneralizedAlpha::project_predictor(const Dae& dae, double h, double a_per_
   DaeRequest req;
   req.forces = false;
   req.constraint_jacobian = dae.supports_constraint_jacobian();
-  update_iterate(h);
+  update_iterate();
   instrumented::evaluate(dae, trial_, req, eval_, stats_);
   eta_ = projection_solver_.solve(-eval_.Cdot);
   dy_.noalias() = constraint_jacobian_.transpose() * eta_;
@@ -420,7 +422,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   }
   if (index2) {
     try {
-      project_predictor(dae, h, bp / gp, 1.0 / bp);
+      project_predictor(dae, bp / gp, 1.0 / bp);
     } catch (const SolverError& e) {
       return fail(e.what());
     }
@@ -465,7 +467,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     }
     ++report.iterations;
     ++stats_.iterations;
-    update_iterate(h);
+    update_iterate();
     DaeRequest req;
     req.reaction_forces = m_ > 0;
     const bool refresh = want_fresh || !newton_solver_.factorized();
@@ -610,7 +612,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     if (converged) break;
     previous = norm;
   }
-  update_iterate(h);
+  update_iterate();
   // the constraints at the accepted positions (cheap: no forces, no matrix); with index 2
   // also their Jacobian, the next step's projection R = C_q(q_{n+1})^T
   if (index2) {

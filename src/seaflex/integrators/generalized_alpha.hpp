@@ -165,9 +165,9 @@ class GeneralizedAlpha : public Integrator {
   void predict_coasting();
   // the parts of abar_{n+1}, q_{n+1}, v_{n+1} that do not depend on a_{n+1}, once per step
   void prepare_iterate(const State& state_n, double h);
-  // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n and step h
-  // given to prepare_iterate (one pass over the coordinates: the iterations' vector work)
-  void update_iterate(double h);
+  // abar_{n+1}, q_{n+1}, v_{n+1} of the iterate a_ = a_{n+1}, from the state at t_n and the
+  // step given to prepare_iterate
+  void update_iterate();
   // M a: from the stored constant mass matrix, from eval_ (in_eval: assembled with km = 1
   // alone in the same pass as the forces), or from a mass-only evaluation
   void mass_times(const Dae& dae, const State& state, const VecX& a, bool in_eval, VecX& out);
@@ -176,7 +176,7 @@ class GeneralizedAlpha : public Integrator {
   /// Index 2: the predictor's velocities and positions projected onto the constraints
   /// (a_per_v = beta'/gamma', the acceleration change per velocity change; q_per_a = 1/beta',
   /// the position change per acceleration change).
-  void project_predictor(const Dae& dae, double h, double a_per_v, double q_per_a);
+  void project_predictor(const Dae& dae, double a_per_v, double q_per_a);
   void prepare_projection(const Dae& dae, const State& state);
 
   GeneralizedAlphaSettings s_;
@@ -204,7 +204,8 @@ class GeneralizedAlpha : public Integrator {
   // index 2: the projection term R eta of q_{n+1}, R = C_q(q_n)^T, its update, and
   // C_q(q_n) C_q(q_n)^T factored once per step
   VecX corr_, dy_, eta_, predicted_C_;
-  VecX abar_base_, q_base_, v_base_;  // prepare_iterate's parts
+  VecX abar_base_, q_base_, v_base_;  // prepare_iterate's parts, for its step iterate_h_
+  double iterate_h_ = 0.0;
   DaeEval projection_eval_;
   SpMat constraint_jacobian_;
   // C_q C_q^T: up to settings.dense_projection_rows rows summed into projection_dense_ and

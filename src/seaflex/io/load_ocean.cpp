@@ -567,6 +567,12 @@ void load_water(MapReader& env, LoadContext& ctx, double g) {
     MapReader pr(ctx.diag, probes, env.key_path("wave_probes"));
     if (pr.valid())
       for (const auto& kv : probes) {
+        if (!kv.first.IsScalar()) {
+          ctx.diag.error(kv.first.Mark(), pr.path(),
+                         fmt::format("a wave probe's name must be plain text, got {} as a key",
+                                     describe(kv.first)));
+          continue;
+        }
         const std::string name = kv.first.Scalar();
         pr.has(name);
         if (const std::string problem = name_problem(name, "wave probe", "wave.eta.<name>");
@@ -596,6 +602,11 @@ void load_hydrodynamics(const YAML::Node& node, LoadContext& ctx) {
     return;
   }
   for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) {
+      ctx.diag.error(kv.first.Mark(), "hydrodynamics",
+                     fmt::format("expected a body's name as the key, got {}", describe(kv.first)));
+      continue;
+    }
     const std::string name = kv.first.Scalar();
     top.has(name);
     const std::string path = top.key_path(name);
