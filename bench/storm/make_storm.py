@@ -234,7 +234,7 @@ def storm_model(n, components=200, kinematics="grid", duration=10830.0, fmt="hdf
     name = f"storm_sc_n{n}" if spread else f"storm_n{n}"
     # Morison Gauss points: 2 on 3 m elements, 1 (the midpoint) on elements of 1 m or less
     # (measured: docs/performance.md, "Morison Gauss points", "One Morison point on 0.3 m
-    # elements" and "Two Morison points on 3 m elements")
+    # elements" and "Two Morison points on 3 m elements, sparser levels and the RAO sum")
     length = (depth + top_z) / n  # the riser runs from the seabed to top_z
     gauss = 2 if length > 1.0 else 1
     if gauss == 2:
@@ -242,7 +242,8 @@ def storm_model(n, components=200, kinematics="grid", duration=10830.0, fmt="hdf
             "  # 2 Gauss points per element for the Morison load (default 5): on these 3 m elements\n"
             "  # the 630 s storm's envelopes along the whole riser (the wave zone included) stay within\n"
             "  # 4.7e-5 of 5 points' with exact kinematics, with 9 % fewer instructions\n"
-            "  # (docs/performance.md, \"Two Morison points on 3 m elements\")")
+            "  # (docs/performance.md, \"Two Morison points on 3 m elements, sparser levels and the\n"
+            "  # RAO sum\")")
     else:
         gauss_comment = (
             f"  # 1 Gauss point (the midpoint) per element for the Morison load (default 5): these\n"

@@ -12,8 +12,8 @@ against the reference, with the wall time of each run (one thread).
         [--reference-kinematics exact] [--elements 100] [--work DIR]
 The reference runs at the default Newton tolerance, 1e-10 (the storm files: 1e-9).
 --kinematics (and --reference-kinematics) is `exact`, `grid` (the storm files' spacings,
-ds 0.5 m, dt 0.2 s and dz_growth 0.2), or e.g. `grid:ds=0.25,dt=0.1` for other spacings (the other keys of
-environment.waves.grid keep their defaults). With --work DIR the runs are kept in
+ds 0.5 m, dt 0.2 s and dz_growth 0.2), or e.g. `grid:ds=0.25,dt=0.1` for other spacings
+(the other keys of environment.waves.grid keep their defaults). With --work DIR the runs are kept in
 DIR and a run of the same model text whose results are already there is not made again
 (e.g. the exact reference; a different binary is not noticed: use a fresh DIR then).
 Every run writes its rows at the same times, every --output s (default 0.4 s, a multiple

@@ -38,6 +38,16 @@ std::complex<double> oscillator(double w) {
   return 1.0 / std::complex<double>(1.0 - r * r, 2.0 * 0.15 * r);
 }
 
+// the storm's JONSWAP sea (Hs 6 m, Tp 10 s) with n random-phase components
+SpectrumSpec storm_sea(int n, int seed) {
+  SpectrumSpec spec;
+  spec.hs = 6.0;
+  spec.tp = 10.0;
+  spec.components = n;
+  spec.seed = seed;
+  return spec;
+}
+
 }  // namespace
 
 // regular wave: x_j = a |H_j| cos(w t + arg H_j - k.o + phase), the wave crest at the RAO
@@ -94,11 +104,7 @@ TEST(RaoMotion, RegularWaveAmplitudeAndPhase) {
 // 3-hour record of heave (sampled every 0.5 s) equals int |H|^2 S dw within 2 % (the
 // issue's tolerance: the random frequencies and the finite record give about 1 %).
 TEST(RaoMotion, IrregularSeaVarianceEqualsSpectralIntegral) {
-  SpectrumSpec spec;
-  spec.hs = 6.0;
-  spec.tp = 10.0;
-  spec.components = 400;
-  spec.seed = 7;
+  const SpectrumSpec spec = storm_sea(400, 7);
   const auto comps = irregular_components(spec, std::numeric_limits<double>::infinity(), 9.81);
   RaoTable table;
   table.data.has_excitation = true;
@@ -169,12 +175,7 @@ TEST(RaoMotion, IrregularSeaVarianceEqualsSpectralIntegral) {
 // another order. And the derivatives against central differences of the displacement
 // (step 1e-3 s: truncation (w dt)^2 / 6 < 2e-6 of the largest term's w |c|, round-off 1e-13 / dt).
 TEST(RaoMotion, SampleEqualsTheComplexSumTermByTerm) {
-  SpectrumSpec spec;
-  spec.hs = 6.0;
-  spec.tp = 10.0;
-  spec.components = 200;
-  spec.seed = 3;
-  const auto comps = irregular_components(spec, 290.0, 9.81);
+  const auto comps = irregular_components(storm_sea(200, 3), 290.0, 9.81);
   RaoTable table;
   table.data.has_excitation = true;
   table.data.headings = {0.0};
@@ -193,9 +194,11 @@ TEST(RaoMotion, SampleEqualsTheComplexSumTermByTerm) {
     if (c.amplitude != 0.0) omega.push_back(c.omega);
   ASSERT_EQ(omega.size(), 200u);
   Vec6 scale0 = Vec6::Zero(), scale1 = Vec6::Zero(), scale2 = Vec6::Zero();
+  std::vector<Vec6c> c;
+  for (std::size_t k = 0; k < omega.size(); ++k) c.push_back(m.complex_amplitude(k));
   for (std::size_t k = 0; k < omega.size(); ++k)
     for (int j = 0; j < 6; ++j) {
-      const double a = std::abs(m.complex_amplitude(k)[j]);
+      const double a = std::abs(c[k][j]);
       scale0[j] += a;
       scale1[j] += omega[k] * a;
       scale2[j] += omega[k] * omega[k] * a;
@@ -205,7 +208,7 @@ TEST(RaoMotion, SampleEqualsTheComplexSumTermByTerm) {
     for (std::size_t k = 0; k < omega.size(); ++k) {
       const std::complex<double> e = std::polar(1.0, omega[k] * t);
       for (int j = 0; j < 6; ++j) {
-        const std::complex<double> z = m.complex_amplitude(k)[j] * e;
+        const std::complex<double> z = c[k][j] * e;
         x[j] += z.real();
         xt[j] += (std::complex<double>(0.0, omega[k]) * z).real();
         xtt[j] += -omega[k] * omega[k] * z.real();

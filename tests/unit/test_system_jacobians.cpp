@@ -123,9 +123,10 @@ TEST(SystemJacobians, BeamGravityIsMinusTheGradientOfItsPotential) {
   }
   const std::vector<BeamSection> sections{BeamSection::pipe(0.3, 0.25, 2.1e11, 7850),
                                           BeamSection::pipe(0.5, 0.1, 2.1e11, 3000)};
+  const std::vector<int> section_of{0, 1, 1, 0, 1};
   System sys;
-  auto& beam = static_cast<AncfBeam&>(sys.add_body(std::make_unique<AncfBeam>(
-      "beam", geo, sections, std::vector<int>{0, 1, 1, 0, 1}, BeamOptions{})));
+  auto& beam = static_cast<AncfBeam&>(
+      sys.add_body(std::make_unique<AncfBeam>("beam", geo, sections, section_of, BeamOptions{})));
   sys.finalize();
   State st = sys.initial_state();
   st.q += 0.1 * VecX::Random(st.q.size());
@@ -142,7 +143,6 @@ TEST(SystemJacobians, BeamGravityIsMinusTheGradientOfItsPotential) {
     EXPECT_NEAR(Q[j], -dV, 1e-12 * Q.norm()) << sys.coordinate_name(j);
   }
   double mass = 0.0;
-  const std::vector<int> section_of{0, 1, 1, 0, 1};
   for (std::size_t el = 0; el < geo.element_lengths.size(); ++el)
     mass += sections[section_of[el]].mass_per_length() * geo.element_lengths[el];
   Vec3 total = Vec3::Zero();
