@@ -148,6 +148,9 @@ bool GeneralizedAlpha::save(CheckpointWriter& out) const {
   out.put("ga.refresh_next", static_cast<long>(refresh_next_));
   out.put("ga.h_last", h_last_);
   out.put("ga.theta", carried_theta_);
+  out.put("ga.reuse_theta", reuse_theta_);
+  out.put("ga.reuse_h", reuse_h_);
+  out.put("ga.steps_on_matrix", steps_on_matrix_);
   if (h_last_ > 0.0) {
     out.put("ga.a_before", a_before_);
     out.put("ga.lambda_before", lambda_before_);
@@ -180,6 +183,9 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
   // the predictor's memory (absent from checkpoints written before it: no extrapolation)
   h_last_ = in.has("ga.h_last") ? in.number("ga.h_last") : 0.0;
   carried_theta_ = in.has("ga.theta") ? in.number("ga.theta") : 0.0;
+  reuse_theta_ = in.has("ga.reuse_theta") ? in.number("ga.reuse_theta") : 0.0;
+  reuse_h_ = in.has("ga.reuse_h") ? in.number("ga.reuse_h") : 0.0;
+  steps_on_matrix_ = in.has("ga.steps_on_matrix") ? in.integer("ga.steps_on_matrix") : 0;
   if (h_last_ > 0.0) {
     a_before_ = in.vector("ga.a_before");
     lambda_before_ = in.vector("ga.lambda_before");
@@ -494,7 +500,10 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
                         "without mass or supports, or redundant constraints",
                         newton_solver_.message()));
       factored_h_ = h;
-      carried_theta_ = 0.0;  // a new matrix: its rates are yet to be seen
+      // a new matrix: the rate its predecessor showed one step after its factorization, for
+      // the same step length (file header), else none until its own rates are seen
+      carried_theta_ = reuse_h_ == h ? reuse_theta_ : 0.0;
+      steps_on_matrix_ = 0;
       factored_at_ = trial_;
       factored_a_ = a_;
       want_fresh = s_.newton == NewtonMode::kFull || coasting;  // a hard step: full Newton
@@ -643,7 +652,14 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   a_before_ = a_n_;
   h_last_ = h;
   // the rate of a stale matrix beyond the update that removed the predictor's error
-  if (!fresh_in_step && rates >= 2) carried_theta_ = last_theta;
+  if (!fresh_in_step && rates >= 2) {
+    carried_theta_ = last_theta;
+    if (steps_on_matrix_ == 1) {  // the first step that reused the matrix (file header)
+      reuse_theta_ = last_theta;
+      reuse_h_ = h;
+    }
+  }
+  ++steps_on_matrix_;
   a_n_ = a_;
   abar_n_ = abar_;
   // a matrix that has aged so that the step needed more than refresh_iterations

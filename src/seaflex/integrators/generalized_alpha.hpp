@@ -82,7 +82,13 @@
 // predictor's error, later ones the matrix's), so one rate observed within the step is not
 // trusted alone: the second update is judged with the larger of its rate and the last rate
 // of the previous step raised to the power 0.8 (the FACCON of Hairer & Wanner's RADAU5,
-// sec. IV.8), which lets a smooth motion converge in two iterations.
+// sec. IV.8), which lets a smooth motion converge in two iterations. A new matrix has no
+// rate of its own yet; RADAU5 keeps FACCON across its Jacobian updates, and here a new
+// matrix starts from the last rate of the first step that reused the previous one (a
+// matrix one step old, factored for the same step length; none: it waits for a rate of
+// its own, one more iteration). Without it every refactorization cost a third iteration
+// in the next step (storm_n100, 600 s: 2.53 -> 2.27 iterations per step, docs/
+// performance.md "A new matrix starts from its predecessor's rate").
 // Predictor: a_{n+1} and lambda_{n+1} extrapolated linearly from the last two steps,
 //   a_{n+1} ~ a_n + (h / h_{n-1}) (a_n - a_{n-1})   (and the same for lambda),
 // whose error is O(h^2) against O(h) for the last step's values; an imposed vessel motion
@@ -226,6 +232,12 @@ class GeneralizedAlpha : public Integrator {
   double h_last_ = 0.0;
   VecX a_before_, lambda_before_;
   double carried_theta_ = 0.0;
+  // the rate a matrix showed in the first step that reused it (0: none yet), the step it
+  // was factored for, and the steps completed since the last factorization: a new matrix
+  // starts from the previous one's first rate (see the file header)
+  double reuse_theta_ = 0.0;
+  double reuse_h_ = 0.0;
+  long steps_on_matrix_ = 0;
 };
 
 }  // namespace seaflex
