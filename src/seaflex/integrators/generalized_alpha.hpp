@@ -106,6 +106,7 @@
 #include <limits>
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <Eigen/SparseCholesky>
 
 #include "seaflex/integrators/integrator.hpp"
@@ -163,7 +164,9 @@ class GeneralizedAlpha : public Integrator {
   /// The true acceleration q'' at the last accepted step.
   const VecX& acceleration() const { return a_n_; }
   /// Index 2: the projection's C_q C_q^T as last factored (at the last accepted state).
-  const SpMat& projection_matrix() const { return projection_matrix_; }
+  MatX projection_matrix() const {
+    return projection_is_dense_ ? projection_dense_ : MatX(projection_matrix_);
+  }
 
  private:
   void prepare(const Dae& dae);
@@ -217,8 +220,13 @@ class GeneralizedAlpha : public Integrator {
   // C_q C_q^T: up to settings.dense_projection_rows rows summed into projection_dense_ and
   // stored with every entry (no sparse product per step); beyond, the sparse product
   MatX projection_dense_;
+  Eigen::LLT<MatX> projection_dense_solver_;  // factored as a dense matrix
+  bool projection_is_dense_ = false;
   SpMat projection_matrix_;
   Eigen::SimplicialLDLT<SpMat> projection_solver_;
+  VecX projection_rhs_;
+  // eta_ = (C_q C_q^T)^-1 projection_rhs_ with whichever factors prepare_projection made
+  void solve_projection();
   bool projection_analyzed_ = false;
   bool projection_ready_ = false;  // factored for the current state
   State trial_;
