@@ -17,6 +17,8 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // a step with a reused matrix that needs more iterations than this refactors the next
 constexpr int kRefreshIterations = 3;
+// new matrices in a row that start from the stored rate before one measures it again
+constexpr int kRateReuses = 8;
 }  // namespace
 
 GeneralizedAlphaSettings GeneralizedAlphaSettings::from_rho_inf(double rho) {
@@ -91,6 +93,9 @@ void GeneralizedAlpha::prepare(const Dae& dae) {
 
 void GeneralizedAlpha::start(const Dae& dae, State& state) {
   if (!prepared_) prepare(dae);
+  carried_theta_ = reuse_theta_ = reuse_h_ = 0.0;  // no rates before the first step
+  steps_on_matrix_ = 0;
+  rate_reuses_ = 0;
   q_scale_ = std::max(1.0, state.q.lpNorm<Eigen::Infinity>());
   // consistent initial accelerations and multipliers (thesis eq. 132-133):
   // [M C_q^T; C_q 0] [a; lambda] = [Q; gamma]
@@ -151,6 +156,7 @@ bool GeneralizedAlpha::save(CheckpointWriter& out) const {
   out.put("ga.reuse_theta", reuse_theta_);
   out.put("ga.reuse_h", reuse_h_);
   out.put("ga.steps_on_matrix", steps_on_matrix_);
+  out.put("ga.rate_reuses", static_cast<long>(rate_reuses_));
   if (h_last_ > 0.0) {
     out.put("ga.a_before", a_before_);
     out.put("ga.lambda_before", lambda_before_);
@@ -185,7 +191,10 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
   carried_theta_ = in.has("ga.theta") ? in.number("ga.theta") : 0.0;
   reuse_theta_ = in.has("ga.reuse_theta") ? in.number("ga.reuse_theta") : 0.0;
   reuse_h_ = in.has("ga.reuse_h") ? in.number("ga.reuse_h") : 0.0;
-  steps_on_matrix_ = in.has("ga.steps_on_matrix") ? in.integer("ga.steps_on_matrix") : 0;
+  // (a checkpoint from before these entries: the matrix's age unknown, no rate stored from it)
+  steps_on_matrix_ = in.has("ga.steps_on_matrix") ? in.integer("ga.steps_on_matrix") : 2;
+  rate_reuses_ =
+      in.has("ga.rate_reuses") ? static_cast<int>(in.integer("ga.rate_reuses", 0, kRateReuses)) : 0;
   if (h_last_ > 0.0) {
     a_before_ = in.vector("ga.a_before");
     lambda_before_ = in.vector("ga.lambda_before");
@@ -251,6 +260,7 @@ void GeneralizedAlpha::reject_step() {
   a_scale_ = a_scale_prev_;
   f_scale_ = f_scale_prev_;
   refresh_next_ = refresh_prev_;
+  reuse_theta_ = 0.0;         // a rate the rejected step may have stored: measured again
   h_last_ = 0.0;              // the retried step starts from the last step's values
   projection_ready_ = false;  // C_q at the restored state, at the next step
 }
@@ -329,17 +339,15 @@ void GeneralizedAlpha::project_predictor(const Dae& dae, double a_per_v, double 
   req.constraint_jacobian = dae.supports_constraint_jacobian();
   update_iterate();
   instrumented::evaluate(dae, trial_, req, eval_, stats_);
-  projection_rhs_ = -eval_.Cdot;
-  solve_projection();
+  solve_projection(-eval_.Cdot);
   dy_.noalias() = constraint_jacobian_.transpose() * eta_;
   a_.noalias() += a_per_v * dy_;
-  predicted_C_ = eval_.C;
+  predicted_C_ = -eval_.C;  // -C at the positions the velocities' projection moves to
   if (req.constraint_jacobian)
-    predicted_C_.noalias() += (a_per_v * q_per_a) * (eval_.Cq.matrix() * dy_);
+    predicted_C_.noalias() -= (a_per_v * q_per_a) * (eval_.Cq.matrix() * dy_);
   else
-    predicted_C_.noalias() += (a_per_v * q_per_a) * (constraint_jacobian_ * dy_);
-  projection_rhs_ = -predicted_C_;
-  solve_projection();
+    predicted_C_.noalias() -= (a_per_v * q_per_a) * (constraint_jacobian_ * dy_);
+  solve_projection(predicted_C_);
   corr_.noalias() = constraint_jacobian_.transpose() * eta_;
 }
 
@@ -357,33 +365,41 @@ void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
     instrumented::evaluate(dae, state, req, projection_eval_, stats_);
     constraint_jacobian_ = projection_eval_.kkt.matrix().bottomLeftCorner(m_, n_);
   }
+  auto not_finite = [&] {
+    return SolverError(
+        "the constraint Jacobian C_q is not finite (NaN/Inf): a joint or support cannot be "
+        "evaluated at this state",
+        state.t);
+  };
+  // C_q C_q^T is positive semi-definite: a pivot that is not positive means dependent rows
   projection_is_dense_ = m_ <= s_.dense_projection_rows;
   if (projection_is_dense_) {
     // C_q C_q^T summed coordinate by coordinate into an m x m array (a coordinate's column of
-    // C_q has a few entries: the sum costs sum_k nnz_k^2) and factored as a dense matrix
-    // (Eigen's LDLT with pivoting: m^3/3 operations, a few thousand for the storm's 19
-    // rows, where the sparse factorization of the same full matrix cost ten times more):
-    // no sparse product and no allocation per step
+    // C_q has a few entries: the sum costs sum_k nnz_k^2) and factored as the dense matrix it
+    // is (Eigen's LLT, m^3/6 multiply-adds: 9e3 instructions for the storm's 19 rows, where
+    // a sparse LDL^T of the same matrix stored with every entry took 3e4): no sparse product
+    // and no allocation per step
     projection_dense_.setZero(m_, m_);
-    const int* outer = constraint_jacobian_.outerIndexPtr();
-    const int* row = constraint_jacobian_.innerIndexPtr();
-    const double* value = constraint_jacobian_.valuePtr();
     for (Index k = 0; k < constraint_jacobian_.outerSize(); ++k)
-      for (int a = outer[k]; a < outer[k + 1]; ++a)
-        for (int b = outer[k]; b < outer[k + 1]; ++b)
-          projection_dense_(row[a], row[b]) += value[a] * value[b];
-    projection_dense_solver_.compute(projection_dense_);
-    // a zero or negative pivot (dependent rows) fails the Cholesky factorization
-    projection_ready_ = projection_dense_solver_.info() == Eigen::Success &&
-                        projection_dense_solver_.matrixLLT().diagonal().allFinite();
+      for (SpMat::InnerIterator a(constraint_jacobian_, k); a; ++a)
+        for (SpMat::InnerIterator b(constraint_jacobian_, k); b; ++b)
+          projection_dense_(a.row(), b.row()) += a.value() * b.value();
+    if (!projection_dense_.allFinite()) throw not_finite();
+    projection_dense_solver_.compute(projection_dense_);  // fails on a pivot <= 0
+    projection_ready_ = projection_dense_solver_.info() == Eigen::Success;
   } else {
     projection_matrix_ = constraint_jacobian_ * constraint_jacobian_.transpose();
+    projection_matrix_.makeCompressed();
+    if (!Eigen::Map<const VecX>(projection_matrix_.valuePtr(), projection_matrix_.nonZeros())
+             .allFinite())
+      throw not_finite();
     if (!projection_analyzed_) {
       projection_solver_.analyzePattern(projection_matrix_);
       projection_analyzed_ = true;
     }
-    projection_solver_.factorize(projection_matrix_);
-    projection_ready_ = projection_solver_.info() == Eigen::Success;
+    projection_solver_.factorize(projection_matrix_);  // fails on a pivot = 0 only
+    projection_ready_ = projection_solver_.info() == Eigen::Success &&
+                        (projection_solver_.vectorD().array() > 0.0).all();
   }
   if (!projection_ready_)
     throw SolverError(
@@ -392,11 +408,11 @@ void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
         state.t);
 }
 
-void GeneralizedAlpha::solve_projection() {
+void GeneralizedAlpha::solve_projection(const VecX& rhs) {
   if (projection_is_dense_)
-    eta_ = projection_dense_solver_.solve(projection_rhs_);
+    eta_ = projection_dense_solver_.solve(rhs);
   else
-    eta_ = projection_solver_.solve(projection_rhs_);
+    eta_ = projection_solver_.solve(rhs);
 }
 
 StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
@@ -506,9 +522,14 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
                         "without mass or supports, or redundant constraints",
                         newton_solver_.message()));
       factored_h_ = h;
-      // a new matrix: the rate its predecessor showed one step after its factorization, for
-      // the same step length (file header), else none until its own rates are seen
-      carried_theta_ = reuse_h_ == h ? reuse_theta_ : 0.0;
+      // a new matrix: the stored rate of an earlier matrix one step after its factorization,
+      // for the same step length, not after a restart from the coasting predictor, and not
+      // for more than kRateReuses matrices in a row (file header); else none until its own
+      // rates are seen
+      const bool reuse =
+          !coasting && reuse_theta_ > 0.0 && reuse_h_ == h && rate_reuses_ < kRateReuses;
+      carried_theta_ = reuse ? reuse_theta_ : 0.0;
+      if (reuse) ++rate_reuses_;
       steps_on_matrix_ = 0;
       factored_at_ = trial_;
       factored_a_ = a_;
@@ -527,8 +548,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     if (index2) {
       // the projection onto C = 0 along R = C_q(q_n)^T: C_q (dq + R deta) = -C with
       // C_q dq = -Cdot / gamma', solved with C_q(q_n) C_q(q_n)^T for C_q R
-      projection_rhs_ = eval_.Cdot / gp - eval_.C;
-      solve_projection();
+      solve_projection(eval_.Cdot / gp - eval_.C);
       dy_.noalias() = constraint_jacobian_.transpose() * eta_;
     }
     if (!sol_.allFinite() || (index2 && !dy_.allFinite())) {
@@ -664,6 +684,7 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
     if (steps_on_matrix_ == 1) {  // the first step that reused the matrix (file header)
       reuse_theta_ = last_theta;
       reuse_h_ = h;
+      rate_reuses_ = 0;
     }
   }
   ++steps_on_matrix_;

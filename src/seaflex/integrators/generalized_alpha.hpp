@@ -40,8 +40,9 @@
 //   S = M + kv Ct + kq Kt,  [S, C_q^T; C_q, 0] [dq; dmu] = -[r / beta'; c],
 //   dlambda = beta' dmu,  r = M a + C_q^T lambda - Q,
 // with c = C (index 3) or c = (C_q v + C_t) / gamma' (index 2; then the projection update
-// deta solves C_q(q_n) C_q(q_n)^T deta = -C + Cdot / gamma', a sparse LDL^T of m x m
-// factored once per step, and q_{n+1} gains R deta).
+// deta solves C_q(q_n) C_q(q_n)^T deta = -C + Cdot / gamma', m x m, factored once per
+// step: a dense Cholesky up to settings.dense_projection_rows rows, a sparse LDL^T beyond;
+// and q_{n+1} gains R deta).
 //
 // Convergence (what the step solves for, not only positions): the Newton updates of the
 // accelerations, of the multipliers and of the projection are measured against
@@ -83,12 +84,17 @@
 // trusted alone: the second update is judged with the larger of its rate and the last rate
 // of the previous step raised to the power 0.8 (the FACCON of Hairer & Wanner's RADAU5,
 // sec. IV.8), which lets a smooth motion converge in two iterations. A new matrix has no
-// rate of its own yet; RADAU5 keeps FACCON across its Jacobian updates, and here a new
-// matrix starts from the last rate of the first step that reused the previous one (a
-// matrix one step old, factored for the same step length; none: it waits for a rate of
-// its own, one more iteration). Without it every refactorization cost a third iteration
-// in the next step (storm_n100, 600 s: 2.53 -> 2.27 iterations per step, docs/
-// performance.md "A new matrix starts from its predecessor's rate").
+// rate of its own yet. RADAU5 keeps FACCON across its Jacobian updates, but the last rate
+// of the matrix being replaced is that of a matrix too old (docs/performance.md, fifth
+// session: 2.40 iterations per step). Here a new matrix starts from a stored rate: the
+// last rate of the latest first step on a matrix (the step after its factorization) that
+// took three or more iterations, at the same step length: how a matrix one step old
+// contracts. It is used for at most kRateReuses = 8 new matrices in a row; the next one
+// starts without a rate, so that its first step measures it again, and so does a matrix
+// factored at a restart from the coasting predictor (a hard step) or after a rejected
+// step. Without a stored rate every refactorization cost a third iteration in the next
+// step (storm_n100, the 3-hour storm: 2.55 -> 2.43 iterations per step, docs/
+// performance.md "A new matrix starts from a stored rate").
 // Predictor: a_{n+1} and lambda_{n+1} extrapolated linearly from the last two steps,
 //   a_{n+1} ~ a_n + (h / h_{n-1}) (a_n - a_{n-1})   (and the same for lambda),
 // whose error is O(h^2) against O(h) for the last step's values; an imposed vessel motion
@@ -131,9 +137,10 @@ struct GeneralizedAlphaSettings {
   /// modified Newton refactors when the updates contract more slowly than this
   double refresh_rate = 0.25;
   LinearSolverKind linear_solver = kDefaultLinearSolver;  ///< backend of the Newton solves
-  /// index 2: C_q C_q^T of up to this many constraint rows is summed into a full m x m
-  /// matrix, column by column of C_q (a few entries each), instead of a sparse product per
-  /// step; the same matrix either way
+  /// index 2: C_q C_q^T of up to this many constraint rows is summed into a dense m x m
+  /// matrix, column by column of C_q (a few entries each), and factored by a dense
+  /// Cholesky; beyond, a sparse product and a sparse LDL^T. The same matrix either way;
+  /// both report dependent rows on a pivot that is not positive
   Index dense_projection_rows = 64;
   /// Chung & Hulbert's parameters for a spectral radius rho_inf in [0, 1].
   static GeneralizedAlphaSettings from_rho_inf(double rho_inf);
@@ -187,6 +194,8 @@ class GeneralizedAlpha : public Integrator {
   /// the position change per acceleration change).
   void project_predictor(const Dae& dae, double a_per_v, double q_per_a);
   void prepare_projection(const Dae& dae, const State& state);
+  // eta_ = (C_q C_q^T)^-1 rhs with the factors prepare_projection made
+  void solve_projection(const VecX& rhs);
 
   GeneralizedAlphaSettings s_;
   bool prepared_ = false;
@@ -218,15 +227,12 @@ class GeneralizedAlpha : public Integrator {
   DaeEval projection_eval_;
   SpMat constraint_jacobian_;
   // C_q C_q^T: up to settings.dense_projection_rows rows summed into projection_dense_ and
-  // stored with every entry (no sparse product per step); beyond, the sparse product
+  // factored as a dense matrix (no sparse product per step); beyond, the sparse product
   MatX projection_dense_;
-  Eigen::LLT<MatX> projection_dense_solver_;  // factored as a dense matrix
+  Eigen::LLT<MatX> projection_dense_solver_;
   bool projection_is_dense_ = false;
   SpMat projection_matrix_;
   Eigen::SimplicialLDLT<SpMat> projection_solver_;
-  VecX projection_rhs_;
-  // eta_ = (C_q C_q^T)^-1 projection_rhs_ with whichever factors prepare_projection made
-  void solve_projection();
   bool projection_analyzed_ = false;
   bool projection_ready_ = false;  // factored for the current state
   State trial_;
@@ -240,12 +246,14 @@ class GeneralizedAlpha : public Integrator {
   double h_last_ = 0.0;
   VecX a_before_, lambda_before_;
   double carried_theta_ = 0.0;
-  // the rate a matrix showed in the first step that reused it (0: none yet), the step it
-  // was factored for, and the steps completed since the last factorization: a new matrix
-  // starts from the previous one's first rate (see the file header)
+  // the stored rate: the last rate of the last first step on a matrix that took three or
+  // more iterations (0: none), the step length it was measured at, the steps completed on
+  // the current matrix, and the new matrices that have started from the stored rate since
+  // it was measured (see the file header, "Modified Newton")
   double reuse_theta_ = 0.0;
   double reuse_h_ = 0.0;
   long steps_on_matrix_ = 0;
+  int rate_reuses_ = 0;
 };
 
 }  // namespace seaflex
