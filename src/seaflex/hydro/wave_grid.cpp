@@ -284,24 +284,39 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pre
     col.filled[blk] = 1;
     if (pressure) col.filled_p[blk] = 1;
     // the exact sums at the block's levels, without the ramp (WaveField::airy), over the
-    // components each level keeps (depth truncation): four dot products per level, a fifth
-    // for the pressure when asked (Eigen's vectorized reductions)
+    // components the block's top level keeps (depth truncation: the deeper levels keep
+    // fewer, and their further terms, each below the truncation's bound, are added too):
+    // the four kinematics values of the block's levels as four matrix-vector products, the
+    // levels' depth factors (rows) times each of the column's coefficients (Eigen's
+    // row-major product runs the block's rows together and reads each coefficient once for
+    // them; dot products per level read it once per level); the pressure, when asked, a dot
+    // product per level over the level's own components
     const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
+    if (kin) {
+      const auto rows = static_cast<Eigen::Index>(hi - lo);
+      const auto n = static_cast<Eigen::Index>(keep_[lo]);
+      using Rows =
+          Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>,
+                     0, Eigen::OuterStride<>>;
+      using CMap = Eigen::Map<const Eigen::VectorXd>;
+      const std::size_t row = lo * static_cast<std::size_t>(N);
+      const Rows fh(fh_.data() + row, rows, n, Eigen::OuterStride<>(N)),
+          fv(fv_.data() + row, rows, n, Eigen::OuterStride<>(N));
+      Eigen::Map<Eigen::VectorXd> uh(col.values.data() + lo, rows),
+          uz(col.values.data() + J + lo, rows), ah(col.values.data() + 2 * J + lo, rows),
+          az(col.values.data() + 3 * J + lo, rows);
+      uh.noalias() = fh * CMap(col.coef.data(), n);
+      ah.noalias() = fh * CMap(col.coef.data() + N, n);
+      uz.noalias() = fv * CMap(col.coef.data() + 2 * N, n);
+      az.noalias() = fv * CMap(col.coef.data() + 3 * N, n);
+    }
+    if (!pre) continue;
     using CMap = Eigen::Map<const Eigen::VectorXd>;
     for (std::size_t j = lo; j < hi; ++j) {
       const auto n = static_cast<Eigen::Index>(keep_[j]);
-      const CMap c_uh(col.coef.data(), n), c_ah(col.coef.data() + N, n),
-          c_uz(col.coef.data() + 2 * N, n), c_az(col.coef.data() + 3 * N, n),
-          c_p(col.coef.data() + 4 * N, n);
-      const std::size_t row = j * static_cast<std::size_t>(N);
-      const CMap fh(fh_.data() + row, n), fv(fv_.data() + row, n), fp(fp_.data() + row, n);
-      if (kin) {
-        col.values[j] = fh.dot(c_uh);
-        col.values[J + j] = fv.dot(c_uz);
-        col.values[2 * J + j] = fh.dot(c_ah);
-        col.values[3 * J + j] = fv.dot(c_az);
-      }
-      if (pre) col.values[4 * J + j] = fp.dot(c_p);
+      const CMap c_p(col.coef.data() + 4 * N, n),
+          fp(fp_.data() + j * static_cast<std::size_t>(N), n);
+      col.values[4 * J + j] = fp.dot(c_p);
     }
   }
 }

@@ -24,6 +24,9 @@
 //   waves die out with depth (e^{k z}), so deep levels sum a fraction of the components
 //   (storm: all above about -30 m, a quarter at the seabed of 290 m); the error is far below
 //   the interpolation's and below the 1e-12 to which the grid equals the sum at its nodes.
+//   The velocity and acceleration of a block of kBlock levels are summed together, over the
+//   components of its top level (the deeper levels' further terms are inside their bound:
+//   summing them is as exact), as matrix-vector products; the pressure level by level.
 // - Levels: z_0 = 0, z_{j+1} = z_j - (dz + dz_growth |z_j|), the last one at -d (deep
 //   water: at -21 / k_min, where e^{k_min z} < 1e-9; below it the exact sum is used): fine
 //   at the surface where the shortest components live, coarse at depth where only the long
@@ -120,7 +123,8 @@ class WaveGrid {
   static constexpr int kBlock = 4;
   /// The dropped terms' bound at each level, relative to the surface's (file header).
   static constexpr double kTruncation = 1e-14;
-  /// The number of components (the longest waves first) summed at level j.
+  /// The number of components (the longest waves first) level j needs (its depth
+  /// truncation); its velocity and acceleration sum those of its block's top level.
   std::size_t components_at_level(std::size_t j) const { return keep_[j]; }
 
  private:
