@@ -292,13 +292,13 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pre
     // them; dot products per level read it once per level); the pressure, when asked, a dot
     // product per level over the level's own components
     const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
+    using CMap = Eigen::Map<const Eigen::VectorXd>;
     if (kin) {
       const auto rows = static_cast<Eigen::Index>(hi - lo);
       const auto n = static_cast<Eigen::Index>(keep_[lo]);
       using Rows =
           Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>,
                      0, Eigen::OuterStride<>>;
-      using CMap = Eigen::Map<const Eigen::VectorXd>;
       const std::size_t row = lo * static_cast<std::size_t>(N);
       const Rows fh(fh_.data() + row, rows, n, Eigen::OuterStride<>(N)),
           fv(fv_.data() + row, rows, n, Eigen::OuterStride<>(N));
@@ -311,7 +311,6 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pre
       az.noalias() = fv * CMap(col.coef.data() + 3 * N, n);
     }
     if (!pre) continue;
-    using CMap = Eigen::Map<const Eigen::VectorXd>;
     for (std::size_t j = lo; j < hi; ++j) {
       const auto n = static_cast<Eigen::Index>(keep_[j]);
       const CMap c_p(col.coef.data() + 4 * N, n),

@@ -408,13 +408,6 @@ void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
         state.t);
 }
 
-void GeneralizedAlpha::solve_projection(const VecX& rhs) {
-  if (projection_is_dense_)
-    eta_ = projection_dense_solver_.solve(rhs);
-  else
-    eta_ = projection_solver_.solve(rhs);
-}
-
 StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   if (!started_) start(dae, state);
   ++stats_.steps;

@@ -194,8 +194,15 @@ class GeneralizedAlpha : public Integrator {
   /// the position change per acceleration change).
   void project_predictor(const Dae& dae, double a_per_v, double q_per_a);
   void prepare_projection(const Dae& dae, const State& state);
-  // eta_ = (C_q C_q^T)^-1 rhs with the factors prepare_projection made
-  void solve_projection(const VecX& rhs);
+  // eta_ = (C_q C_q^T)^-1 rhs with the factors prepare_projection made (an expression:
+  // written into eta_ and solved there, no temporary per iteration)
+  template <class Rhs>
+  void solve_projection(const Eigen::MatrixBase<Rhs>& rhs) {
+    if (projection_is_dense_)
+      eta_ = projection_dense_solver_.solve(rhs);
+    else
+      eta_ = projection_solver_.solve(rhs);
+  }
 
   GeneralizedAlphaSettings s_;
   bool prepared_ = false;
