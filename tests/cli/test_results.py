@@ -9,6 +9,7 @@ Needs h5py and VTK's Python module (Debian: python3-h5py, python3-vtk9).
 usage: test_results.py SEAFLEX_EXECUTABLE SOURCE_DIR
 """
 import csv
+import math
 import os
 import signal
 import subprocess
@@ -120,23 +121,30 @@ class Results(TempDirCase):
                     env[:, env_header.index(f"moment.{part}")])
 
     def test_killed_run_leaves_a_readable_hdf5_file(self):
+        # The HDF5 file takes its rows in blocks of Hdf5Recorder::kWorkPerBlock = 524288
+        # coordinate-steps (io/hdf5_recorder.hpp): this riser has 45 elements (46 nodes x 6
+        # coordinates) and the buoy 7, 283 coordinates, and 5 fixed steps per output row, so
+        # a block is written once 524288 / (283 x 5) = 370.5 rows of work have been done since
+        # the last: the first write holds rows 0..371 (the first row is recorded before any
+        # step), each later one 371 more. A run killed with SIGKILL keeps 1 + 371 j rows.
+        block = 371
+        self.assertEqual(math.ceil(524288 / (283 * 5)), block)
+        fixed = (RISER.replace("step_control: adaptive", "step_control: fixed")
+                 .replace("time_step: 0.05", "time_step: 0.002")
+                 .replace("output_interval: 0.1", "output_interval: 0.01"))
         out = os.path.join(self.dir, "killed")
-        model = self.model(RISER.replace("DURATION", "10000"), "long.yaml")
+        model = self.model(fixed.replace("DURATION", "10000"), "long.yaml")
         proc = subprocess.Popen([SEAFLEX, "run", model, "-o", out, "-q", "--format", "both"],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         csv_path = os.path.join(out, "timeseries.csv")
-        # 3 s of the snap start: 1 s in release, up to a minute under the sanitizers on a
-        # loaded machine; the wait ends as soon as the rows are there
+        # three blocks of rows: 1 s in release, a minute or two under the sanitizers; the wait
+        # ends as soon as the rows are there
         deadline = time.time() + 300
         try:
-            # wait for 31 rows in the CSV (header + 31 lines), which is written row by row
-            # like the HDF5 file: each output row goes to the CSV file first, so the HDF5
-            # file may be one row behind when the run is killed (29 of 30 were seen under
-            # the sanitizers)
             while time.time() < deadline:
                 if os.path.exists(csv_path):
                     with open(csv_path) as f:
-                        if sum(1 for _ in f) > 32:
+                        if sum(1 for _ in f) > 3 * block + 2:
                             break
                 time.sleep(0.05)
             self.assertIsNone(proc.poll(), "the run ended before it was killed")
@@ -144,20 +152,27 @@ class Results(TempDirCase):
         finally:
             proc.wait()
         self.assertEqual(proc.returncode, -signal.SIGKILL)
+        # the CSV file is written row by row, before the HDF5 recorder takes the row: its
+        # whole lines are the rows recorded (its last line may be cut)
+        with open(csv_path) as f:
+            csv_rows = sum(1 for line in f if line.endswith("\n")) - 1
         with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
             t = f["time"][:]
             values = f["channels"][:]
             T = f["beams/riser/results/tension_effective"][:]
         n = len(t)
-        self.assertGreaterEqual(n, 30)
-        # consecutive output times 0, 0.1, 0.2, ... (the loop counts ticks: exact to
-        # round-off of k * 0.1)
-        np.testing.assert_allclose(t, 0.1 * np.arange(n), rtol=0, atol=1e-12)
+        self.assertGreaterEqual(n, 2 * block + 1)
+        self.assertEqual((n - 1) % block, 0, n)
+        # at most one block behind the rows recorded
+        self.assertLessEqual(csv_rows - n, block, (csv_rows, n))
+        # consecutive output times 0, 0.01, 0.02, ... (the loop counts ticks: exact to
+        # round-off of k * 0.01)
+        np.testing.assert_allclose(t, 0.01 * np.arange(n), rtol=0, atol=1e-9)
         self.assertEqual(values.shape[0], n)
         self.assertEqual(T.shape[0], n)
         # the same numbers as a complete run of the first rows (runs are deterministic)
         ref = os.path.join(self.dir, "ref")
-        r = run("run", self.model(RISER.replace("DURATION", f"{0.1 * (n - 1):.1f}"), "short.yaml"),
+        r = run("run", self.model(fixed.replace("DURATION", f"{0.01 * (n - 1):.2f}"), "short.yaml"),
                 "-o", ref, "-q", "--format", "hdf5")
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertFalse(os.path.exists(os.path.join(ref, "timeseries.csv")))

@@ -17,6 +17,11 @@ DynamicsRun::DynamicsRun(const io::Model& model, const AnalysisOutput& output, b
                                              *integrator_, d.simulation());
   if (output.dir) {
     files_ = std::make_unique<ResultFiles>(model, *output.dir, "timeseries", true, resume);
+    // the HDF5 rows in blocks of a fixed amount of work: coordinates x steps taken
+    files_->set_work_counter(
+        [sim = simulation_.get(), n = static_cast<double>(model.system->num_coordinates())] {
+          return n * static_cast<double>(sim->steps_taken());
+        });
     simulation_->add_recorder(*files_);
   }
   for (Recorder* r : output.timeseries) simulation_->add_recorder(*r);

@@ -84,6 +84,10 @@ void ResultFiles::flush() {
   if (first && !failing) std::rethrow_exception(first);
 }
 
+void ResultFiles::set_work_counter(std::function<double()> work) {
+  if (h5_) h5_->set_work_counter(std::move(work));
+}
+
 void ResultFiles::write_row(const ChannelList& channels, const State& state) {
   std::vector<std::string> names;
   std::vector<double> values;

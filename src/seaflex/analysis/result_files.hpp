@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ class ResultFiles : public Recorder {
   /// stderr; when a failure is already on its way (the simulation flushes before it
   /// rethrows), that one is reported and these are only printed.
   void flush() override;
+  /// The HDF5 file takes its rows in blocks of about Hdf5Recorder::kWorkPerBlock of work
+  /// (io/hdf5_recorder.hpp); without a counter, row by row.
+  void set_work_counter(std::function<double()> work);
   /// One row (statics): begin, record, flush.
   void write_row(const ChannelList& channels, const State& state);
 

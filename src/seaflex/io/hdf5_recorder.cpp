@@ -28,6 +28,8 @@ constexpr unsigned kDeflateLevel = 1;
 // an uncompressed chunk holds about this many bytes
 constexpr hsize_t kChunkBytes = 16 * 1024;
 constexpr hsize_t kMaxChunkRows = 1024;
+// the most rows a block holds (Hdf5Recorder::set_work_counter)
+constexpr hsize_t kMaxBlockRows = 1024;
 
 // An HDF5 identifier closed by its own close function.
 class Handle {
@@ -163,6 +165,7 @@ struct Hdf5Recorder::Impl {
     Handle set;
     std::vector<hsize_t> shape;  // of one row
     hsize_t row_size = 1;
+    std::vector<double> staged;  // rows not written yet, one after the other
   };
   Series series(hid_t parent, const std::string& name, std::vector<hsize_t> shape,
                 const char* unit) {
@@ -194,8 +197,14 @@ struct Hdf5Recorder::Impl {
     if (unit) string_attribute(s.set.get(), "units", unit);
     return s;
   }
-  void append(Series& s, hsize_t row, const double* values) {
-    std::vector<hsize_t> dims{row + 1}, start{row}, count{1};
+  // a row kept in memory until the block it belongs to is written
+  static void stage(Series& s, const double* values) {
+    s.staged.insert(s.staged.end(), values, values + s.row_size);
+  }
+  // the rows [written, rows) of a dataset, kept by stage(), in one write
+  void write_staged(Series& s) {
+    const hsize_t n = rows - written;
+    std::vector<hsize_t> dims{rows}, start{written}, count{n};
     for (hsize_t d : s.shape) {
       dims.push_back(d);
       start.push_back(0);
@@ -207,11 +216,18 @@ struct Hdf5Recorder::Impl {
     check_status(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
                                      count.data(), nullptr),
                  "H5Sselect_hyperslab");
-    Handle mem(check(H5Screate_simple(1, &s.row_size, nullptr), "H5Screate_simple"), H5Sclose);
-    check_status(
-        H5Dwrite(s.set.get(), H5T_NATIVE_DOUBLE, mem.get(), file_space.get(), H5P_DEFAULT, values),
-        "H5Dwrite");
+    // the memory space in the selection's shape: HDF5 then copies whole rows, where a flat
+    // one made it map the values one by one
+    Handle mem(check(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr),
+                     "H5Screate_simple"),
+               H5Sclose);
+    check_status(H5Dwrite(s.set.get(), H5T_NATIVE_DOUBLE, mem.get(), file_space.get(), H5P_DEFAULT,
+                          s.staged.data()),
+                 "H5Dwrite");
+    s.staged.clear();
   }
+  // every staged row on disk, data and metadata: a run killed after this keeps them
+  void write_rows();
 
   struct Beam {
     post::BeamResults results;
@@ -227,10 +243,26 @@ struct Hdf5Recorder::Impl {
   std::vector<Beam> beams;
   bool per_row = true, envelope = true;
   Series time, channels;
-  hsize_t rows = 0;
+  hsize_t rows = 0;              // rows recorded
+  hsize_t written = 0;           // rows on disk
+  std::function<double()> work;  // set_work_counter()
+  double work_written = 0.0;     // work() at the last write
   MatX table;
   std::vector<double> buffer;
 };
+
+void Hdf5Recorder::Impl::write_rows() {
+  if (written == rows) return;
+  write_staged(time);
+  write_staged(channels);
+  for (auto& b : beams) {
+    write_staged(b.positions);
+    for (auto& q : b.quantities) write_staged(q);
+  }
+  written = rows;
+  if (work) work_written = work();
+  check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
+}
 
 Hdf5Recorder::Hdf5Recorder(const std::filesystem::path& path, std::vector<post::BeamResults> beams,
                            bool per_row, bool envelope)
@@ -304,28 +336,35 @@ void Hdf5Recorder::begin(const std::vector<std::string>& channels) {
 
 void Hdf5Recorder::record(const State& state, std::span<const double> values) {
   Impl& m = *impl_;
-  m.append(m.time, m.rows, &state.t);
-  m.append(m.channels, m.rows, values.data());
+  m.stage(m.time, &state.t);
+  m.stage(m.channels, values.data());
   for (auto& b : m.beams) {
     const AncfBeam& beam = b.results.beam();
     m.buffer.resize(3 * static_cast<std::size_t>(beam.num_nodes()));
     for (int k = 0; k < beam.num_nodes(); ++k)
       for (int c = 0; c < 3; ++c) m.buffer[3 * k + c] = state.q[beam.node_index(k) + c];
-    m.append(b.positions, m.rows, m.buffer.data());
+    m.stage(b.positions, m.buffer.data());
     if (!m.per_row && !m.envelope) continue;
     b.results.compute(state, m.table);
     if (m.envelope) b.envelope.add(m.table);
     for (std::size_t q = 0; q < b.quantities.size(); ++q)
-      m.append(b.quantities[q], m.rows, m.table.col(static_cast<Index>(q)).data());
+      m.stage(b.quantities[q], m.table.col(static_cast<Index>(q)).data());
   }
   ++m.rows;
-  // data and metadata on disk: a killed run leaves every row written so far
-  m.check_status(H5Fflush(m.file.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
+  // data and metadata on disk once a block is complete (and at every flush())
+  if (!m.work || m.rows - m.written >= kMaxBlockRows || m.work() - m.work_written >= kWorkPerBlock)
+    m.write_rows();
+}
+
+void Hdf5Recorder::set_work_counter(std::function<double()> work) {
+  impl_->work = std::move(work);
+  impl_->work_written = impl_->work ? impl_->work() : 0.0;
 }
 
 void Hdf5Recorder::flush() {
   Impl& m = *impl_;
   if (m.failed) return;  // already reported; its rows up to the failure are on disk
+  m.write_rows();
   if (m.envelope) {
     for (auto& b : m.beams) {
       if (b.envelope.count() == 0) continue;

@@ -2,8 +2,9 @@
 // positions of every output beam (time x node x 3), its results along the length (time x
 // station per quantity, post/beam_results.hpp) and their envelopes. Every dataset that
 // grows in time is chunked (rows of 16 KiB or more deflate-compressed, one per chunk);
-// each output row extends them and ends with H5Fflush, and file space is never reused,
-// so a run that is killed leaves a readable file holding every row written before.
+// rows are kept in memory and written in blocks (set_work_counter(); and at every flush()),
+// each block ending with H5Fflush, and file space is never reused, so a run that is killed
+// leaves a readable file holding every block written before.
 // Layout: docs/results-format.md.
 #pragma once
 
@@ -32,6 +33,14 @@ class Hdf5Recorder : public Recorder {
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
   void flush() override;
+  /// Rows in blocks: a block is written (and the file flushed) once work() has grown by
+  /// kWorkPerBlock since the last write (work: the coordinate-steps computed so far, a count
+  /// that is the same in every run of the model, so the file's bytes are too), or once it
+  /// holds 1024 rows. Without a counter (statics) every row is written at once.
+  void set_work_counter(std::function<double()> work);
+  /// About 0.2 s of the storm benchmark's run (docs/performance.md, "HDF5 rows in blocks"):
+  /// the most a run killed by SIGKILL loses; a failure or SIGINT/SIGTERM writes every row.
+  static constexpr double kWorkPerBlock = 524288.0;
 
   /// A table of named rows and columns (statistics of a run).
   struct Table {

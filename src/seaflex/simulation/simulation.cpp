@@ -160,6 +160,7 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
       const double h = static_cast<double>(step_ticks) * tick;
       if (adaptive) saved_ = state;
       const StepReport step = integrator_.step(dae_, state, h);
+      ++steps_taken_;
       const double t_new = t0 + static_cast<double>(ticks + step_ticks) * tick;  // no drift
       std::string failure;
       if (!step.ok) {

@@ -104,6 +104,9 @@ class Simulation {
 
   /// Number of steps per output row.
   long steps_per_output() const { return every_; }
+  /// Steps taken by run() or resume() so far, the retried ones included (the work done:
+  /// the same count in every run of the model).
+  long steps_taken() const { return steps_taken_; }
 
  private:
   void record(State& state);
@@ -125,6 +128,7 @@ class Simulation {
   State saved_;     // the state before the step, for a retry
   std::vector<double> row_;
   long rows_ = 0;
+  long steps_taken_ = 0;
 };
 
 }  // namespace seaflex
