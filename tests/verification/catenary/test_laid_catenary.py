@@ -308,17 +308,21 @@ class ChainHardCase(SeaflexCase):
         """Converges (45 Newton iterations, 2026-11-26) to the catenary within 0.2 %."""
         self.assertLess(abs(self.solve(1)), TOLERANCE)
 
-    # With 2 load steps (also 20 and 100; 1, 5 and 10 are right) statics reports convergence
+    # With 2 load steps (and others, below; 1, 5 and 10 are right) statics reports convergence
     # (relative residual 1e-10) on a spurious equilibrium: the line folds into two Z-shaped
     # kinks near s = 800 and 860 m (strain 3.4 %, curvature 0.5 1/m there), lifts its whole
     # laid length off the seabed and carries a fairlead tension of 3.6 MN (2 steps; 6.8 MN
     # with 20) instead of the catenary's 0.68 MN (seaflex 0.1.0, 2026-11-26). With EI =
     # 6.8e3 N m^2 the fold costs almost nothing, and the first load increment (87 iterations
-    # from the slack guess) drives the line into it. Two step counts, so that a build whose
-    # round-off happens to avoid one fold still shows the failure.
+    # from the slack guess) drives the line into it. Which step counts fold depends on the
+    # round-off: on 2026-11-28 the portable build folded with 2, 3, 50 and 100 steps (fairlead
+    # tension +170 %, +362 %, +445 %, +445 %) and found the catenary with 4 and 20, and the
+    # SEAFLEX_NATIVE build (fused multiply-adds) folded with 3, 50 and 100 (+110 %, +3128 %,
+    # +3128 %) and found it with 2, 4 and 20. 2, 3 and 50 steps: two of them fold in both
+    # builds, so that a build whose round-off avoids one fold still shows the failure.
     @unittest.expectedFailure
     def test_more_load_steps(self):
-        errors = [self.solve(n) for n in (2, 20)]
+        errors = [self.solve(n) for n in (2, 3, 50)]
         self.assertLess(max(abs(e) for e in errors), TOLERANCE)
 
 
