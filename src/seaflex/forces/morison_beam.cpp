@@ -31,6 +31,18 @@ MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
       ocean_(std::move(ocean)) {
   if (coefficients_.size() != beam_.sections().size())
     throw std::invalid_argument("MorisonBeam: one set of coefficients per beam section needed");
+  const double rho = ocean_->rho();
+  for (const MorisonBeamCoefficients& c : coefficients_) {
+    const double D = c.diameter;
+    const double area = 0.25 * std::numbers::pi * D * D;
+    PointConstants k;
+    k.drag = 0.5 * rho * c.cd * D;  // thesis eq. (176)
+    k.drag_axial = 0.5 * rho * c.cd_axial * std::numbers::pi * D;
+    k.inertia = rho * c.cm * area;
+    k.inertia_axial = rho * c.cm_axial * area;
+    k.buoyancy = c.buoyancy ? rho * ocean_->g() * area : 0.0;
+    constants_.push_back(k);
+  }
   rule_ = math::gauss_legendre_unit(coefficients_.front().gauss_points);
   reuse_ = coefficients_.front().fluid_reuse;
   if (!(reuse_ >= 0.0)) throw std::invalid_argument("MorisonBeam: fluid_reuse must be >= 0");
@@ -78,13 +90,9 @@ std::pair<double, double> MorisonBeam::wet_interval(const State& state, int k) c
   return hydro::wet_interval(above);
 }
 
-MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c,
-                                               const hydro::FluidPoint& fl, const Vec3& rp,
-                                               const Vec3& rdot, double load_factor,
+MorisonBeam::PointLoad MorisonBeam::point_load(const PointConstants& c, const hydro::FluidPoint& fl,
+                                               const Vec3& rp, const Vec3& rdot, double load_factor,
                                                bool derivatives, bool with_buoyancy) const {
-  const double rho = ocean_->rho();
-  const double D = c.diameter;
-  const double area = 0.25 * std::numbers::pi * D * D;
   PointLoad out;
   const double stretch = rp.norm();
   const Vec3 tt = rp / stretch;
@@ -93,14 +101,11 @@ MorisonBeam::PointLoad MorisonBeam::point_load(const MorisonBeamCoefficients& c,
   const double ua = tt.dot(u);
   const Vec3 un = u - ua * tt;
   const double unn = un.norm();
-  const double cd = 0.5 * rho * c.cd * D;  // thesis eq. (176)
-  const double cax = 0.5 * rho * c.cd_axial * std::numbers::pi * D;
-  const double ci = rho * c.cm * area;
-  const double cia = rho * c.cm_axial * area;
+  const double cd = c.drag, cax = c.drag_axial, ci = c.inertia, cia = c.inertia_axial;
   const double aa = tt.dot(fl.acceleration);
   const Vec3 an = fl.acceleration - aa * tt;
   out.f = cd * unn * un + cax * std::abs(ua) * ua * tt + ci * an + cia * aa * tt;
-  if (c.buoyancy && with_buoyancy) out.f.z() += rho * ocean_->g() * area;
+  if (with_buoyancy) out.f.z() += c.buoyancy;
   out.f *= load_factor;  // an external load: statics steps it in with the load factor
   if (!derivatives) return out;
   // d f / d u_n of the drag, and the derivatives through u = U - r_dot and t = r'/|r'|
@@ -126,6 +131,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
   // the beam's even, then odd elements; in parallel within each (core/parallel.hpp)
   for_each_colored(beam_.coloring(), [&](int k) {
     const MorisonBeamCoefficients& c = coefficients_[beam_.section_index(k)];
+    const PointConstants& pc = constants_[beam_.section_index(k)];
     const double area_i = 0.25 * std::numbers::pi * c.internal_diameter * c.internal_diameter;
     const double m_int = c.internal_density * area_i;  // contents' mass per length
     const double area = 0.25 * std::numbers::pi * c.diameter * c.diameter;
@@ -165,7 +171,7 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       const Vec4 shx = wholly_wet ? wet_shape_dx_[at] : ancf_cable::shape_dx(xi, l);
       const Vec3 r = E * sh, rp = E * shx, rdot = Ed * sh;
       const bool deriv = want_matrix && (s.kq != 0.0 || s.kv != 0.0);
-      const PointLoad pl = point_load(c, fluid_at(k, g, r, state.t), rp, rdot, load_factor, deriv);
+      const PointLoad pl = point_load(pc, fluid_at(k, g, r, state.t), rp, rdot, load_factor, deriv);
       if (target.forces) {
         auto Q = target.forces->segment<12>(beam_.node_index(k));
         for (int i = 0; i < 4; ++i) Q.segment<3>(3 * i) += (dx * sh[i]) * pl.f;  // eq. (177)
@@ -211,10 +217,10 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
           rp_[j] += h;
           rm_[j] -= h;
           // buoyancy is uniform where wet: left out, so the surface is no step
-          df_dr.col(j) = (point_load(c, ocean_->fluid(rp_, state.t, false), rp, rdot, load_factor,
+          df_dr.col(j) = (point_load(pc, ocean_->fluid(rp_, state.t, false), rp, rdot, load_factor,
                                      false, false)
                               .f -
-                          point_load(c, ocean_->fluid(rm_, state.t, false), rp, rdot, load_factor,
+                          point_load(pc, ocean_->fluid(rm_, state.t, false), rp, rdot, load_factor,
                                      false, false)
                               .f) /
                          (2.0 * h);

@@ -97,8 +97,16 @@ class MorisonBeam : public Force {
     Mat3 df_dv;   // d f / d r_dot (set only when the derivatives are asked for)
     Mat3 df_drp;  // d f / d r'
   };
-  PointLoad point_load(const MorisonBeamCoefficients& c, const hydro::FluidPoint& fl,
-                       const Vec3& rp, const Vec3& rdot, double load_factor, bool derivatives,
+  /// A section's coefficients times the water's density (thesis eq. 176), made once.
+  struct PointConstants {
+    double drag = 0.0;           // 1/2 rho Cd D
+    double drag_axial = 0.0;     // 1/2 rho Cd_ax pi D
+    double inertia = 0.0;        // rho Cm A
+    double inertia_axial = 0.0;  // rho Cm_ax A
+    double buoyancy = 0.0;       // rho g A, or 0 without buoyancy
+  };
+  PointLoad point_load(const PointConstants& c, const hydro::FluidPoint& fl, const Vec3& rp,
+                       const Vec3& rdot, double load_factor, bool derivatives,
                        bool with_buoyancy = true) const;
   /// The fluid at Gauss point g of element k at r, time t: kept and reused (fluid_reuse).
   hydro::FluidPoint fluid_at(int k, std::size_t g, const Vec3& r, double t) const;
@@ -111,6 +119,7 @@ class MorisonBeam : public Force {
 
   const AncfBeam& beam_;
   std::vector<MorisonBeamCoefficients> coefficients_;  // per beam section
+  std::vector<PointConstants> constants_;              // per beam section
   std::shared_ptr<const hydro::Ocean> ocean_;
   math::QuadratureRule rule_;
   // the shape functions and their slopes at the Gauss points of a wholly wet element k:
