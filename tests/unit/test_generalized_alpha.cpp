@@ -580,20 +580,17 @@ TEST(GeneralizedAlpha, ANewMatrixStartsFromItsPredecessorsRate) {
 // that may store a rate), continues after a restore with the same iterations, step by step,
 // and the same positions, bit for bit, as the uninterrupted run over 60 more steps
 // (restoring any of ga.reuse_theta, ga.reuse_h, ga.steps_on_matrix and ga.rate_reuses as 0
-// fails it). With `fluid_reuse: 0`: with the file's 1 mm the restored matrix is formed with
-// the water's kinematics at the iterate it was factored at, where the run had reused those
-// of an earlier iterate of that step, and the paths part at round-off (7e-16 m after the
-// first step, 4e-12 m after 60).
+// fails it). With the file's `fluid_reuse: 0.001`: the matrix is formed from the water found
+// at the iterate it is factored at (MorisonBeam::fluid_at), as the restore forms it again;
+// when it used the water kept from an earlier iterate of that step, the paths parted at
+// round-off here (7e-16 m after the first step, 4e-12 m after 60).
 TEST(GeneralizedAlpha, ACheckpointCarriesTheRateANewMatrixStartsFrom) {
   const std::string file = std::string(SEAFLEX_SOURCE_DIR) + "/bench/storm/storm_n100.yaml";
   GeneralizedAlphaSettings settings = GeneralizedAlphaSettings::from_rho_inf(0.8);
   settings.tolerance = 1e-9;  // the file's
   std::ifstream in(file);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string reuse = "fluid_reuse: 0.001";
-  const std::size_t at = text.find(reuse);
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, reuse.size(), "fluid_reuse: 0");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NE(text.find("fluid_reuse: 0.001"), std::string::npos);
   io::Model a = io::load_model_text(text, file);
   GeneralizedAlpha ga(settings);
   State s = a.system->initial_state();
@@ -607,7 +604,7 @@ TEST(GeneralizedAlpha, ACheckpointCarriesTheRateANewMatrixStartsFrom) {
   };
   std::vector<Saved> saved;
   std::vector<int> iterations;
-  std::vector<VecX> q;
+  std::vector<VecX> q, lam;
   constexpr int kSteps = 600, kAfter = 60;
   for (int k = 0; k < kSteps; ++k) {
     const long before = ga.stats().factorizations;
@@ -616,6 +613,7 @@ TEST(GeneralizedAlpha, ACheckpointCarriesTheRateANewMatrixStartsFrom) {
     a.system->accept_step(s);
     iterations.push_back(rep.iterations);
     q.push_back(s.q);
+    lam.push_back(s.lambda);
     if (ga.stats().factorizations > before && k >= 300 && k + kAfter < kSteps && saved.size() < 4) {
       CheckpointWriter out;
       out.put("format", std::string("seaflex-checkpoint-1"));
@@ -638,6 +636,8 @@ TEST(GeneralizedAlpha, ACheckpointCarriesTheRateANewMatrixStartsFrom) {
     }
     const std::size_t last = static_cast<std::size_t>(c.steps + kAfter - 1);
     EXPECT_EQ((sb.q - q[last]).lpNorm<Eigen::Infinity>(), 0.0);
+    EXPECT_EQ((sb.lambda - lam[last]).lpNorm<Eigen::Infinity>(), 0.0)
+        << (sb.lambda - lam[last]).transpose();
     EXPECT_GT((sb.q - c.state.q).lpNorm<Eigen::Infinity>(), 1e-3);  // it moved on
   }
 }

@@ -55,11 +55,12 @@ MorisonBeam::MorisonBeam(std::string name, const AncfBeam& beam,
     }
 }
 
-hydro::FluidPoint MorisonBeam::fluid_at(int k, std::size_t g, const Vec3& r, double t) const {
+hydro::FluidPoint MorisonBeam::fluid_at(int k, std::size_t g, const Vec3& r, double t,
+                                        bool fresh) const {
   // the beam's load uses the water's velocity and acceleration, not its dynamic pressure
   if (reuse_ <= 0.0) return ocean_->fluid(r, t, false);
   KeptFluid& kept = kept_[static_cast<std::size_t>(k) * rule_.points.size() + g];
-  if (kept.t == t && (r - kept.r).lpNorm<Eigen::Infinity>() <= reuse_) return kept.fluid;
+  if (!fresh && kept.t == t && (r - kept.r).lpNorm<Eigen::Infinity>() <= reuse_) return kept.fluid;
   kept.t = t;
   kept.r = r;
   kept.fluid = ocean_->fluid(r, t, false);
@@ -171,7 +172,10 @@ void MorisonBeam::assemble(const State& state, double load_factor, AssemblyTarge
       const Vec4 shx = wholly_wet ? wet_shape_dx_[at] : ancf_cable::shape_dx(xi, l);
       const Vec3 r = E * sh, rp = E * shx, rdot = Ed * sh;
       const bool deriv = want_matrix && (s.kq != 0.0 || s.kv != 0.0);
-      const PointLoad pl = point_load(pc, fluid_at(k, g, r, state.t), rp, rdot, load_factor, deriv);
+      // the Newton matrix from the water found at this iterate (fluid_at: a restart forms
+      // it again from the iterate alone)
+      const PointLoad pl =
+          point_load(pc, fluid_at(k, g, r, state.t, deriv), rp, rdot, load_factor, deriv);
       if (target.forces) {
         auto Q = target.forces->segment<12>(beam_.node_index(k));
         for (int i = 0; i < 4; ++i) Q.segment<3>(3 * i) += (dx * sh[i]) * pl.f;  // eq. (177)

@@ -108,8 +108,11 @@ class MorisonBeam : public Force {
   PointLoad point_load(const PointConstants& c, const hydro::FluidPoint& fl, const Vec3& rp,
                        const Vec3& rdot, double load_factor, bool derivatives,
                        bool with_buoyancy = true) const;
-  /// The fluid at Gauss point g of element k at r, time t: kept and reused (fluid_reuse).
-  hydro::FluidPoint fluid_at(int k, std::size_t g, const Vec3& r, double t) const;
+  /// The fluid at Gauss point g of element k at r, time t: kept and reused (fluid_reuse);
+  /// `fresh`: found again at r (and kept), whatever is kept. An evaluation that forms the
+  /// Newton matrix asks fresh: a restart forms that matrix again from the iterate alone
+  /// (GeneralizedAlpha::restore), which must give the same matrix, bit for bit.
+  hydro::FluidPoint fluid_at(int k, std::size_t g, const Vec3& r, double t, bool fresh) const;
 
   struct KeptFluid {
     double t = std::numeric_limits<double>::quiet_NaN();

@@ -157,6 +157,7 @@ bool GeneralizedAlpha::save(CheckpointWriter& out) const {
   out.put("ga.reuse_h", reuse_h_);
   out.put("ga.steps_on_matrix", steps_on_matrix_);
   out.put("ga.rate_reuses", static_cast<long>(rate_reuses_));
+  if (projection_ready_ && std::isfinite(projection_t_)) out.put("ga.projection_t", projection_t_);
   if (h_last_ > 0.0) {
     out.put("ga.a_before", a_before_);
     out.put("ga.lambda_before", lambda_before_);
@@ -202,6 +203,9 @@ void GeneralizedAlpha::restore(const Dae& dae, const CheckpointReader& in) {
       throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
   }
   projection_ready_ = false;
+  // (a checkpoint from before this entry: C_q at the state's own time)
+  restored_projection_t_ = in.has("ga.projection_t") ? in.number("ga.projection_t")
+                                                     : std::numeric_limits<double>::quiet_NaN();
   if (a_n_.size() != n_ || abar_n_.size() != n_)
     throw std::invalid_argument("generalized-alpha: the checkpoint is for another model");
   if (factored_h_ > 0.0) {
@@ -353,6 +357,7 @@ void GeneralizedAlpha::project_predictor(const Dae& dae, double a_per_v, double 
 
 void GeneralizedAlpha::prepare_projection(const Dae& dae, const State& state) {
   // C_q(q_n) alone: no forces, no mass (the bodies assemble nothing with zero scales)
+  projection_t_ = state.t;
   DaeRequest req;
   req.forces = false;
   if (dae.supports_constraint_jacobian()) {  // C_q alone, without the KKT matrix
@@ -436,11 +441,18 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   corr_.setZero();
   if (index2 && !projection_ready_) {
     try {
-      prepare_projection(dae, state);
+      if (std::isfinite(restored_projection_t_)) {  // the checkpoint's time (restore)
+        State at = state;
+        at.t = restored_projection_t_;
+        prepare_projection(dae, at);
+      } else {
+        prepare_projection(dae, state);
+      }
     } catch (const SolverError& e) {
       return fail(e.what());
     }
   }
+  restored_projection_t_ = std::numeric_limits<double>::quiet_NaN();
   if (index2) {
     try {
       project_predictor(dae, bp / gp, 1.0 / bp);

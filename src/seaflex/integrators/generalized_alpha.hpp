@@ -242,6 +242,11 @@ class GeneralizedAlpha : public Integrator {
   Eigen::SimplicialLDLT<SpMat> projection_solver_;
   bool projection_analyzed_ = false;
   bool projection_ready_ = false;  // factored for the current state
+  // the time the projection's C_q was formed at: the end of the last step, state.t + h, which
+  // may differ in its last bit from the time the simulation then gives the state (its own
+  // count of steps); a checkpoint carries it, so that a restart forms the same C_q
+  double projection_t_ = std::numeric_limits<double>::quiet_NaN();
+  double restored_projection_t_ = std::numeric_limits<double>::quiet_NaN();
   State trial_;
   std::string failure_;
   // the memory before the last successful step, for reject_step()
