@@ -441,7 +441,9 @@ StepReport GeneralizedAlpha::step(const Dae& dae, State& state, double h) {
   corr_.setZero();
   if (index2 && !projection_ready_) {
     try {
-      if (std::isfinite(restored_projection_t_)) {  // the checkpoint's time (restore)
+      // the checkpoint's time (restore), when it is the state's to round-off (a damaged
+      // entry is not followed: the state's own time then)
+      if (std::abs(restored_projection_t_ - state.t) <= 1e-12 * (1.0 + std::abs(state.t))) {
         State at = state;
         at.t = restored_projection_t_;
         prepare_projection(dae, at);
