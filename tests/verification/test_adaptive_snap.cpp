@@ -19,9 +19,13 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "seaflex/core/checkpoint.hpp"
 #include "seaflex/integrators/generalized_alpha.hpp"
 #include "seaflex/integrators/rk4_augmented.hpp"
 #include "seaflex/io/model_loader.hpp"
@@ -238,5 +242,140 @@ TEST(AdaptiveStepControl, ErrorEstimatesHaveTheirOrder) {
     // the third-order embedded solution errs more than RK4 (an upper bound)
     EXPECT_GT(std::abs(estimate), std::abs(actual));
     previous = estimate;
+  }
+}
+
+namespace {
+
+// Forwards to an integrator (save and restore included) and keeps, for every step() call,
+// whether the Simulation took the step: false when the step failed or was taken back
+// (reject_step)
+class Events : public Integrator {
+ public:
+  explicit Events(Integrator& inner) : inner_(inner) {}
+  std::string_view name() const override { return inner_.name(); }
+  void start(const Dae& dae, State& state) override { inner_.start(dae, state); }
+  const IntegratorStats& stats() const override { return inner_.stats(); }
+  StepReport step(const Dae& dae, State& state, double h) override {
+    const StepReport r = inner_.step(dae, state, h);
+    local_error_ = inner_.local_error();
+    kept.push_back(r.ok);
+    return r;
+  }
+  void update_multipliers(const Dae& dae, State& state) override {
+    inner_.update_multipliers(dae, state);
+  }
+  int local_error_order() const override { return inner_.local_error_order(); }
+  void reject_step() override {
+    inner_.reject_step();
+    kept.back() = false;
+  }
+  bool save(CheckpointWriter& out) const override { return inner_.save(out); }
+  void restore(const Dae& dae, const CheckpointReader& in) override { inner_.restore(dae, in); }
+  std::vector<bool> kept;
+
+ private:
+  Integrator& inner_;
+};
+
+}  // namespace
+
+namespace {
+
+// the text of examples/double_pendulum.yaml with its dynamics section replaced
+std::string double_pendulum(const std::string& dynamics) {
+  std::ifstream in(std::string(SEAFLEX_SOURCE_DIR) + "/examples/double_pendulum.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("\ndynamics:");
+  EXPECT_NE(at, std::string::npos);
+  return text.substr(0, at + 1) + "dynamics: {" + dynamics + "}\n";
+}
+
+}  // namespace
+
+// A restart across rejected steps: a model with adaptive steps, checkpointed after every
+// output row (one largest step), each checkpoint taken through its text (the integrator's
+// memory, the state and the time loop's position, as restart_files.cpp writes them) into a
+// new model, integrator and Simulation and resumed to the end. Every resumed run ends on
+// the uninterrupted run's state bit for bit, with the same steps taken and rejected in the
+// same order; among the checkpoints some are followed at once by a rejected step, whose
+// retry starts from the memory the restore gave (GeneralizedAlpha::reject_step takes back
+// what the rejected step changed). Two models: the snap load (an impact; linear between
+// its events, so that Newton's solution hardly depends on the integrator's memory) and the
+// double pendulum of examples/ (two ball joints: constraints, multipliers and the index-2
+// projection, and a motion whose Newton iterations depend on the predictor: restoring the
+// predictor's memory ga.h_last as 0 fails it).
+TEST(AdaptiveStepControl, ARestartBeforeARejectedStepContinuesBitForBit) {
+  struct Case {
+    std::string name, text;
+  };
+  std::vector<Case> cases;
+  for (const char* integrator : {"generalized_alpha", "rk4"}) {
+    cases.push_back({fmt::format("snap, {}", integrator),
+                     snap_model(fmt::format("integrator: {}, time_step: 0.1, duration: 2.2, "
+                                            "output_interval: 0.1, step_control: adaptive",
+                                            integrator))});
+    cases.push_back({fmt::format("double pendulum, {}", integrator),
+                     double_pendulum(fmt::format("integrator: {}, time_step: 0.05, duration: 2.0, "
+                                                 "output_interval: 0.05, step_control: adaptive, "
+                                                 "error_tolerance: 1.0e-5",
+                                                 integrator))});
+  }
+  for (const Case& k : cases) {
+    SCOPED_TRACE(k.name);
+    struct Saved {
+      std::string text;
+      std::size_t calls = 0;  // step() calls before it
+    };
+    std::vector<Saved> saved;
+    io::Model a = io::load_model_text(k.text, "model.yaml");
+    auto inner = a.dynamics->make_integrator();
+    Events events(*inner);
+    Simulation sim(*a.system, a.system->channels(), events, a.dynamics->simulation());
+    sim.set_checkpoint(1, [&](const State& state, const SimulationPosition& pos) {
+      CheckpointWriter w;
+      w.put("format", std::string("seaflex-checkpoint-1"));
+      pos.save(w);
+      w.put("state.t", state.t);
+      w.put("state.q", state.q);
+      w.put("state.v", state.v);
+      w.put("state.lambda", state.lambda);
+      ASSERT_TRUE(events.save(w));
+      saved.push_back({w.text(), events.kept.size()});
+    });
+    State ref = a.system->initial_state();
+    const SimulationReport full = sim.run(ref);
+    ASSERT_GT(full.rejected_steps, 0);
+    ASSERT_GE(saved.size(), 20u);
+    int rejected_first = 0;
+    for (const Saved& c : saved) {
+      const CheckpointReader in(c.text, "checkpoint");
+      SCOPED_TRACE(fmt::format("resumed at t = {}", in.finite("state.t")));
+      io::Model b = io::load_model_text(k.text, "model.yaml");
+      auto inner_b = b.dynamics->make_integrator();
+      Events events_b(*inner_b);
+      State s = b.system->initial_state();
+      s.t = in.finite("state.t");
+      s.q = in.vector("state.q", s.q.size());
+      s.v = in.vector("state.v", s.v.size());
+      s.lambda = in.vector("state.lambda", s.lambda.size());
+      events_b.restore(*b.system, in);
+      Simulation resumed(*b.system, b.system->channels(), events_b, b.dynamics->simulation());
+      const SimulationReport r = resumed.resume(s, SimulationPosition::load(in));
+      EXPECT_EQ(r.steps, full.steps);
+      EXPECT_EQ(r.rejected_steps, full.rejected_steps);
+      EXPECT_EQ(s.t, ref.t);
+      EXPECT_EQ((s.q - ref.q).lpNorm<Eigen::Infinity>(), 0.0);
+      EXPECT_EQ((s.v - ref.v).lpNorm<Eigen::Infinity>(), 0.0);
+      // the resumed run's step() calls are the rest of the uninterrupted run's
+      ASSERT_EQ(c.calls + events_b.kept.size(), events.kept.size());
+      EXPECT_TRUE(std::equal(events_b.kept.begin(), events_b.kept.end(),
+                             events.kept.begin() + static_cast<long>(c.calls)));
+      if (!events_b.kept.empty() && !events_b.kept.front()) ++rejected_first;
+    }
+    std::printf(
+        "  %s: %ld steps, %ld rejected; %d of %zu checkpoints followed by a rejected step\n",
+        k.name.c_str(), full.steps, full.rejected_steps, rejected_first, saved.size());
+    EXPECT_GE(rejected_first, 1);
   }
 }
