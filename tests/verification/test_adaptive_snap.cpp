@@ -278,10 +278,6 @@ class Events : public Integrator {
   Integrator& inner_;
 };
 
-}  // namespace
-
-namespace {
-
 // the text of examples/double_pendulum.yaml with its dynamics section replaced
 std::string double_pendulum(const std::string& dynamics) {
   std::ifstream in(std::string(SEAFLEX_SOURCE_DIR) + "/examples/double_pendulum.yaml");
