@@ -10,6 +10,7 @@ against the reference, with the wall time of each run (one thread).
     /usr/bin/python3 bench/storm/step_study.py SEAFLEX [--duration 630]
         [--steps 0.4 0.2 0.1 0.05] [--reference 0.025] [--kinematics grid]
         [--reference-kinematics exact] [--elements 100] [--work DIR]
+        [--envelope-sampling rows|steps]
 The reference runs at the default Newton tolerance, 1e-10 (the storm files: 1e-9).
 --kinematics (and --reference-kinematics) is `exact`, `grid` (the storm files' spacings,
 ds 0.5 m, dt 0.2 s and dz_growth 0.2), or e.g. `grid:ds=0.25,dt=0.1` for other spacings
@@ -17,7 +18,9 @@ ds 0.5 m, dt 0.2 s and dz_growth 0.2), or e.g. `grid:ds=0.25,dt=0.1` for other s
 DIR and a run of the same model text whose results are already there is not made again
 (e.g. the exact reference; a different binary is not noticed: use a fresh DIR then).
 Every run writes its rows at the same times, every --output s (default 0.4 s, a multiple
-of every step), so the maxima are taken over the same samples whatever the step."""
+of every step), so the maxima are taken over the same samples whatever the step; with
+--envelope-sampling steps (output.envelope_sampling) the maxima are over every step of
+each run instead, and no longer depend on --output."""
 import argparse
 import csv
 import hashlib
@@ -38,7 +41,8 @@ RAO = str(here.parent.parent / "examples" / "drilling_rig_raos.csv")
 RAMP = 30.0
 
 
-def variant(n, kinematics, duration, step, output, rho_inf=None, tolerance=None):
+def variant(n, kinematics, duration, step, output, rho_inf=None, tolerance=None,
+            envelope_steps=False):
     kind, _, spacing = kinematics.partition(":")
     text = storm_model(n, 200, kind, duration, "csv", RAO)
     if tolerance is not None:
@@ -61,6 +65,9 @@ def variant(n, kinematics, duration, step, output, rho_inf=None, tolerance=None)
     text = text.replace("  beam_results: envelope\n",
                         f"  beam_results: envelope\n  node_slopes: true\n"
                         f"  channels: [\"riser.n{n}.*\", \"wave.eta.riser\"]\n")
+    if envelope_steps:  # the envelopes' extremes over every step, not only the rows
+        text = text.replace("  beam_results: envelope\n",
+                            "  beam_results: envelope\n  envelope_sampling: steps\n")
     return text
 
 
@@ -114,6 +121,9 @@ def main():
     p.add_argument("--reference-kinematics", default="exact")
     p.add_argument("--output", type=float, default=0.4)
     p.add_argument("--work", help="keep the runs in this folder and reuse them")
+    p.add_argument("--envelope-sampling", choices=["rows", "steps"], default="rows",
+                   help="output.envelope_sampling of every run: the maxima over the output "
+                        "rows (the default) or over every step")
     p.add_argument("--rho-inf", type=float,
                    help="generalized-alpha's rho_inf for the runs at --steps (the reference "
                         "keeps the storm file's)")
@@ -129,10 +139,12 @@ def main():
         for h, kin, rho in runs:
             # the reference at the default Newton tolerance, 1e-10 (the storm files: 1e-9)
             tol = 1e-10 if h == a.reference else None
+            steps = a.envelope_sampling == "steps"
             res[(h, kin)] = r = run(
-                a.seaflex, variant(a.elements, kin, a.duration, h, a.output, rho, tol), tmp,
+                a.seaflex, variant(a.elements, kin, a.duration, h, a.output, rho, tol, steps), tmp,
                 f"storm_{kin.replace(':', '_').replace(',', '_').replace('=', '')}"
-                f"_{h:g}_{a.duration:g}_{a.elements}_{a.output:g}" + (f"_rho{rho:g}" if rho is not None else ""))
+                f"_{h:g}_{a.duration:g}_{a.elements}_{a.output:g}"
+                + (f"_rho{rho:g}" if rho is not None else "") + ("_steps" if steps else ""))
             print(f"# h = {h:g} s, {kin}: {r.get('failed') or r['summary']} "
                   f"({r['wall']:.1f} s wall)", flush=True)
     ref = res[(a.reference, a.reference_kinematics)]

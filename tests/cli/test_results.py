@@ -11,6 +11,7 @@ usage: test_results.py SEAFLEX_EXECUTABLE SOURCE_DIR
 import csv
 import math
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -332,6 +333,96 @@ supports:
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertFalse(os.path.exists(os.path.join(out, "timeseries.pvd")))
         self.assertFalse(os.path.exists(os.path.join(out, "vtk", "timeseries")))
+
+    def test_envelopes_over_every_step(self):
+        # output.envelope_sampling: steps takes the envelopes' minimum and maximum over every
+        # step, not only the output rows: with rows every 10th step they equal those of the
+        # same run written at every step, bit for bit (the same states), while the mean stays
+        # the mean over the rows; without the key (rows) the maxima miss the peaks between
+        # the rows. From static equilibrium, a regular wave (2 m, 3 s) ramped in over 1 s,
+        # fixed 0.01 s steps for 2 s (the riser alone: the free buoy has no statics).
+        base = RISER.replace("DURATION", "2.0").replace("  step_control: adaptive\n",
+                                                        "  initial_state: statics\n")
+        base = base.replace("time_step: 0.05", "time_step: 0.01")
+        buoy = "  buoy: {type: rigid_body, mass: 100, inertia: [10, 10, 10], position: [5, 0, 0]}\n"
+        self.assertIn(buoy, base)
+        base = base.replace(buoy, "")  # free: no statics with it
+        base = base.replace("  current: {speed: 1.0, direction: 0}\n",
+                            "  current: {speed: 1.0, direction: 0}\n  waves: {type: airy, "
+                            "height: 2.0, period: 3.0, ramp: {start: 0, duration: 1.0}}\n")
+        self.assertIn("output_interval: 0.1", base)
+
+        def envelope(name, text, fmt):
+            out = os.path.join(self.dir, name)
+            r = run("run", self.model(text, name + ".yaml"), "-o", out, "-q", "--format", fmt)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            header, env = read_csv(os.path.join(out, "riser.envelope.csv"))
+            return out, header, env
+
+        out_s, header, steps = envelope("steps", base + "output: {envelope_sampling: steps}\n",
+                                        "both")
+        _, _, every = envelope("every", base.replace("output_interval: 0.1",
+                                                     "output_interval: 0.01"), "csv")
+        _, _, rows = envelope("rows", base, "csv")
+        cols = {part: [i for i, h in enumerate(header) if h.endswith("." + part)]
+                for part in ("min", "max", "mean")}
+        self.assertEqual(len(cols["max"]), 16)
+        for part in ("min", "max"):
+            np.testing.assert_array_equal(steps[:, cols[part]], every[:, cols[part]], part)
+        # the rows alone: lower maxima (and higher minima) somewhere, never beyond the steps'
+        ok = np.isfinite(steps[:, cols["max"]])
+        self.assertTrue(np.all(rows[:, cols["max"]][ok] <= steps[:, cols["max"]][ok]))
+        self.assertTrue(np.all(rows[:, cols["min"]][ok] >= steps[:, cols["min"]][ok]))
+        # the maxima the rows miss, against the range each station's moment spans
+        hi, lo = steps[:, header.index("moment.max")], steps[:, header.index("moment.min")]
+        gap = np.max((hi - rows[:, header.index("moment.max")]) / (hi - lo))
+        print("  rows every 0.1 s miss up to %.3g of a station's moment range" % gap)
+        # measured 1.15e-2: a sine of the wave's period sampled every 0.1 s loses up to
+        # 1 - cos(pi 0.1 / 3) = 5.5e-3 of its amplitude, the start's faster parts more
+        self.assertGreater(gap, 2e-3)
+        # the mean over the 21 rows, as without the key
+        np.testing.assert_array_equal(steps[:, cols["mean"]], rows[:, cols["mean"]])
+        along_header, along = read_csv(os.path.join(out_s, "riser.along.csv"))
+        self.assertEqual(along.shape[0], 21 * 136)
+        T = along[:, along_header.index("tension_effective")].reshape(21, 136)
+        np.testing.assert_allclose(steps[:, header.index("tension_effective.mean")],
+                                   T.mean(axis=0), rtol=1e-12)
+        # the HDF5 file's envelopes are the CSV file's
+        with h5py.File(os.path.join(out_s, "timeseries.h5"), "r") as f:
+            for part in ("min", "max", "mean"):
+                np.testing.assert_array_equal(f[f"beams/riser/envelope/{part}/moment"][:],
+                                              steps[:, header.index(f"moment.{part}")])
+            self.assertEqual(f["beams/riser/envelope"].attrs["rows"], 21)
+        # a run resumed from its checkpoint at 1 s writes the same envelopes, byte for byte
+        # (the checkpoint holds the extremes of every step before it)
+        text = base + "output: {envelope_sampling: steps}\n"
+        ref = os.path.join(self.dir, "ck")
+        r = run("run", self.model(text, "ck.yaml"), "-o", ref, "-q", "--format", "csv",
+                "--checkpoint-every", "1.0")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        resumed = os.path.join(self.dir, "ck_resumed")
+        shutil.copytree(ref, resumed)
+        r = run("resume", resumed, "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for name in ("riser.envelope.csv", "riser.along.csv", "timeseries.csv"):
+            with open(os.path.join(ref, name), "rb") as a, \
+                    open(os.path.join(resumed, name), "rb") as b:
+                self.assertEqual(a.read(), b.read(), name)
+        with open(os.path.join(ref, "riser.envelope.csv"), "rb") as a, \
+                open(os.path.join(self.dir, "steps", "riser.envelope.csv"), "rb") as b:
+            self.assertEqual(a.read(), b.read())
+        # bad values: named with file, line and key
+        r = run("check", self.model(base + "output: {envelope_sampling: step}\n", "bad1.yaml"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("bad1.yaml:", r.stderr)
+        self.assertIn("output.envelope_sampling: unknown value 'step'; did you mean 'steps'?",
+                      r.stderr)
+        r = run("check", self.model(base + "output: {beam_results: none, envelope_sampling: "
+                                    "steps}\n", "bad2.yaml"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("bad2.yaml:", r.stderr)
+        self.assertIn("output.envelope_sampling: 'steps' samples the beams' envelopes, which "
+                      "beam_results: none leaves out", r.stderr)
 
     def test_bad_format_option(self):
         r = run("run", self.model(RISER.replace("DURATION", "1")), "-o", self.dir,

@@ -117,7 +117,8 @@ TEST(Output, ErrorsAreLocatedWithSuggestions) {
       << e;
   EXPECT_NE(e.find("m.yaml:17:3: output.interval: unknown key; expected one of: "
                    "beam_gauss_points, beam_results, bodies, body_angular_velocity, "
-                   "channels, energies, format, node_slopes, support_reactions, vtk"),
+                   "channels, energies, envelope_sampling, format, node_slopes, support_reactions, "
+                   "vtk"),
             std::string::npos)
       << e;
 }
@@ -162,4 +163,30 @@ TEST(Output, EnvelopeMinMaxMean) {
   EXPECT_TRUE(std::isnan(env.min()(1, 1)) && std::isnan(env.max()(1, 1)) &&
               std::isnan(env.mean()(1, 1)));
   EXPECT_THROW(env.add(MatX::Zero(3, 2)), std::invalid_argument);
+}
+
+// extend: a step between two rows moves the minimum and maximum, not the mean or the count;
+// before the first row it is ignored (the envelope starts with a row)
+TEST(Output, EnvelopeExtendedBetweenRows) {
+  post::Envelope env;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  MatX a(1, 3), step(1, 3), b(1, 3);
+  a << 1, 4, nan;
+  step << 9, -3, 7;
+  b << 3, 2, nan;
+  env.extend(step);  // no row yet: nothing
+  EXPECT_EQ(env.count(), 0);
+  env.add(a);
+  env.extend(step);
+  env.add(b);
+  EXPECT_EQ(env.count(), 2);
+  EXPECT_EQ(env.max()(0, 0), 9.0);
+  EXPECT_EQ(env.min()(0, 0), 1.0);
+  EXPECT_EQ(env.min()(0, 1), -3.0);
+  EXPECT_EQ(env.max()(0, 1), 4.0);
+  EXPECT_EQ(env.mean()(0, 0), 2.0);  // the rows' (1 + 3) / 2
+  EXPECT_EQ(env.mean()(0, 1), 3.0);
+  // a quantity that does not apply (NaN in the rows) stays NaN
+  EXPECT_TRUE(std::isnan(env.min()(0, 2)) && std::isnan(env.max()(0, 2)));
+  EXPECT_THROW(env.extend(MatX::Zero(2, 3)), std::invalid_argument);
 }

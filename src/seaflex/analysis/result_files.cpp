@@ -38,14 +38,14 @@ ResultFiles::ResultFiles(const io::Model& model, const fs::path& dir, const std:
     files_.push_back(dir / fmt::format("{}.csv", stem));
     if (per_row || envelope)
       beams_csv_ = std::make_unique<io::BeamCsvRecorder>(dir, prefix, beam_results(), per_row,
-                                                         envelope, resume);
+                                                         envelope, resume, out.envelope_steps);
     if (per_row && !io::output_plates(model).empty())  // plate section results per node
       plates_csv_ =
           std::make_unique<io::PlateCsvRecorder>(dir, prefix, io::output_plates(model), resume);
   }
   if (h5) {
     h5_ = std::make_unique<io::Hdf5Recorder>(dir / fmt::format("{}.h5", stem), beam_results(),
-                                             per_row, envelope);
+                                             per_row, envelope, out.envelope_steps);
     files_.push_back(dir / fmt::format("{}.h5", stem));
   }
   if (model.statistics && envelopes && model.dynamics)  // a run's statistics (timeseries)
@@ -68,6 +68,10 @@ void ResultFiles::begin(const std::vector<std::string>& channels) {
 
 void ResultFiles::record(const State& state, std::span<const double> values) {
   for (Recorder* r : recorders()) r->record(state, values);
+}
+
+void ResultFiles::observe_step(const State& state) {
+  for (Recorder* r : recorders()) r->observe_step(state);
 }
 
 void ResultFiles::flush() {

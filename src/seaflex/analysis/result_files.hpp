@@ -39,6 +39,7 @@ class ResultFiles : public Recorder {
 
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
+  void observe_step(const State& state) override;
   /// Flushes every recorder, also when one fails (a full disk fails them all): each file
   /// is then complete or reported. The first failure is thrown, the others printed on
   /// stderr; when a failure is already on its way (the simulation flushes before it

@@ -19,8 +19,11 @@ std::vector<std::filesystem::path> BeamCsvRecorder::files(
 
 BeamCsvRecorder::BeamCsvRecorder(const std::filesystem::path& dir, const std::string& prefix,
                                  std::vector<post::BeamResults> beams, bool per_row, bool envelope,
-                                 bool resume)
-    : per_row_(per_row), envelope_(envelope), resumed_(resume) {
+                                 bool resume, bool envelope_steps)
+    : per_row_(per_row),
+      envelope_(envelope),
+      envelope_steps_(envelope && envelope_steps),
+      resumed_(resume) {
   for (auto& r : beams) {
     const std::string name = r.beam().name();
     beams_.push_back({std::move(r),
@@ -57,6 +60,14 @@ void BeamCsvRecorder::record(const State& state, std::span<const double>) {
       line_ += '\n';
     }
     b.along.append(line_);  // one write: the file never ends in a partial row
+  }
+}
+
+void BeamCsvRecorder::observe_step(const State& state) {
+  if (!envelope_steps_) return;
+  for (auto& b : beams_) {
+    b.results.compute(state, table_);
+    b.envelope.extend(table_);
   }
 }
 

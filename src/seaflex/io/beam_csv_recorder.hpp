@@ -25,10 +25,12 @@ class BeamCsvRecorder : public Recorder {
   /// restore()); throws OutputError when a file cannot be written.
   BeamCsvRecorder(const std::filesystem::path& dir, const std::string& prefix,
                   std::vector<post::BeamResults> beams, bool per_row, bool envelope,
-                  bool resume = false);
+                  bool resume = false, bool envelope_steps = false);
 
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
+  /// With envelope_steps: the step's results into the envelopes' minimum and maximum.
+  void observe_step(const State& state) override;
   void flush() override;
   bool save(CheckpointWriter& out, const std::string& prefix) const override;
   void restore(const CheckpointReader& in, const std::string& prefix) override;
@@ -47,6 +49,7 @@ class BeamCsvRecorder : public Recorder {
   };
   std::vector<Beam> beams_;
   bool per_row_, envelope_;
+  bool envelope_steps_ = false;  // the envelopes' extremes over every step
   bool resumed_ = false;
   MatX table_;
   std::string line_;

@@ -242,6 +242,7 @@ struct Hdf5Recorder::Impl {
   std::vector<post::BeamResults> pending;  // until begin()
   std::vector<Beam> beams;
   bool per_row = true, envelope = true;
+  bool envelope_steps = false;  // the envelopes' extremes over every step
   Series time, channels;
   hsize_t rows = 0;              // rows recorded
   hsize_t written = 0;           // rows on disk
@@ -265,7 +266,7 @@ void Hdf5Recorder::Impl::write_rows() {
 }
 
 Hdf5Recorder::Hdf5Recorder(const std::filesystem::path& path, std::vector<post::BeamResults> beams,
-                           bool per_row, bool envelope)
+                           bool per_row, bool envelope, bool envelope_steps)
     : impl_(std::make_unique<Impl>()) {
   // no HDF5 clean-up at exit (before the library's first use): a file whose writes failed (a
   // full disk, a file size limit) cannot be closed, and the library's exit handler then
@@ -277,6 +278,7 @@ Hdf5Recorder::Hdf5Recorder(const std::filesystem::path& path, std::vector<post::
   impl_->pending = std::move(beams);
   impl_->per_row = per_row;
   impl_->envelope = envelope;
+  impl_->envelope_steps = envelope && envelope_steps;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr
   // the default (earliest) file format where it suffices (the file space strategy needs
   // HDF5 1.10 to read): no "open for writing" flag that would make a file left by a
@@ -354,6 +356,15 @@ void Hdf5Recorder::record(const State& state, std::span<const double> values) {
   // data and metadata on disk once a block is complete (and at every flush())
   if (!m.work || m.rows - m.written >= kMaxBlockRows || m.work() - m.work_written >= kWorkPerBlock)
     m.write_rows();
+}
+
+void Hdf5Recorder::observe_step(const State& state) {
+  Impl& m = *impl_;
+  if (!m.envelope_steps) return;
+  for (auto& b : m.beams) {
+    b.results.compute(state, m.table);
+    b.envelope.extend(m.table);
+  }
 }
 
 void Hdf5Recorder::set_work_counter(std::function<double()> work) {

@@ -23,15 +23,17 @@ class Hdf5Recorder : public Recorder {
  public:
   /// Creates (truncates) the file; throws std::runtime_error when it cannot.
   /// beams: the beams whose positions are written; their results along the length per
-  /// output row when per_row, their envelopes (written at every flush) when envelope.
+  /// output row when per_row, their envelopes (written at every flush) when envelope, with
+  /// their extremes also over the steps between the rows when envelope_steps.
   Hdf5Recorder(const std::filesystem::path& path, std::vector<post::BeamResults> beams,
-               bool per_row, bool envelope);
+               bool per_row, bool envelope, bool envelope_steps = false);
   ~Hdf5Recorder() override;
   Hdf5Recorder(const Hdf5Recorder&) = delete;
   Hdf5Recorder& operator=(const Hdf5Recorder&) = delete;
 
   void begin(const std::vector<std::string>& channels) override;
   void record(const State& state, std::span<const double> values) override;
+  void observe_step(const State& state) override;
   void flush() override;
   /// Rows in blocks: a block is written (and the file flushed) once work() has grown by
   /// kWorkPerBlock since the last write (work: the coordinate-steps computed so far, a count

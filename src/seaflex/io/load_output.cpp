@@ -67,6 +67,14 @@ void load_output(const YAML::Node& node, LoadContext& ctx) {
     out.beam_results = *b == "all"        ? OutputSettings::BeamResults::kAll
                        : *b == "envelope" ? OutputSettings::BeamResults::kEnvelope
                                           : OutputSettings::BeamResults::kNone;
+  if (r.has("envelope_sampling")) {
+    out.envelope_steps =
+        r.choice("envelope_sampling", Need::kRequired, {"rows", "steps"}) == "steps";
+    if (out.envelope_steps && out.beam_results == OutputSettings::BeamResults::kNone)
+      r.error("envelope_sampling",
+              "'steps' samples the beams' envelopes, which beam_results: none leaves out; "
+              "use beam_results: envelope or all, or remove envelope_sampling");
+  }
   out.beam_gauss_points = r.integer("beam_gauss_points", Need::kOptional, 0, 10).value_or(2);
   if (r.has("vtk")) out.vtk = r.choice("vtk", Need::kRequired, {"true", "false"}) == "true";
   // optional channels (io/optional_channels.hpp)

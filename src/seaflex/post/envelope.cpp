@@ -22,6 +22,18 @@ void Envelope::add(const MatX& values) {
   ++count_;
 }
 
+void Envelope::extend(const MatX& values) {
+  if (count_ == 0) return;
+  if (values.rows() != min_.rows() || values.cols() != min_.cols())
+    throw std::invalid_argument("Envelope::extend: the table changed size");
+  for (Index j = 0; j < values.cols(); ++j)
+    for (Index i = 0; i < values.rows(); ++i) {
+      const double v = values(i, j);
+      if (v < min_(i, j)) min_(i, j) = v;
+      if (v > max_(i, j)) max_(i, j) = v;
+    }
+}
+
 MatX Envelope::mean() const {
   return count_ > 0 ? MatX(sum_ / static_cast<double>(count_)) : MatX();
 }

@@ -1,5 +1,6 @@
 // Envelopes of results over time: the minimum, maximum and mean of every entry of a
-// table (stations x quantities) over the output rows it is given. NaN entries (a
+// table (stations x quantities) over the output rows it is given, and optionally the
+// minimum and maximum also over the steps between the rows (extend). NaN entries (a
 // quantity that does not apply) stay NaN.
 #pragma once
 
@@ -11,6 +12,9 @@ class Envelope {
  public:
   /// Adds one output row's table; every table must have the size of the first.
   void add(const MatX& values);
+  /// Takes a table between two rows into the minimum and maximum only (the mean stays over
+  /// the rows); ignored before the first row, with which the envelope starts.
+  void extend(const MatX& values);
 
   long count() const { return count_; }
   const MatX& min() const { return min_; }

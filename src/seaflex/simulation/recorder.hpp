@@ -20,6 +20,12 @@ class Recorder {
   /// One output row at state.t: values[i] is channel i; state is complete (multipliers
   /// included) and valid only during the call.
   virtual void record(const State& state, std::span<const double> values) = 0;
+  /// Every step the Simulation accepts between two output rows (the rows themselves go to
+  /// record()), for recorders that keep extremes over every step (the beam envelopes of
+  /// `output.envelope_sampling: steps`). state is valid only during the call; its
+  /// multipliers are the integrator's, not brought up to date as for a row. Nothing by
+  /// default.
+  virtual void observe_step(const State& /*state*/) {}
   /// Makes every recorded row durable (called on failure and at the end).
   virtual void flush() = 0;
 

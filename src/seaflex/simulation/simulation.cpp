@@ -283,7 +283,9 @@ SimulationReport Simulation::loop(State& state, SimulationPosition pos, bool fre
         --level;
         successes = 0;
       }
-      if (ticks % out_ticks == 0 || ticks == total) {
+      if (ticks % out_ticks != 0 && ticks != total) {
+        for (Recorder* r : recorders_) r->observe_step(state);  // between rows
+      } else {
         record(state);
         if (progress_) progress_(state.t - t0, settings_.duration);
         if (checkpoint_ && checkpoint_every_ > 0 && (rows_ - 1) % checkpoint_every_ == 0 &&
