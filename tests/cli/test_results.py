@@ -71,8 +71,10 @@ class Results(TempDirCase):
 
     def test_hdf5_holds_the_csv_numbers(self):
         out = os.path.join(self.dir, "out")
-        r = run("run", self.model(RISER.replace("DURATION", "2.0")), "-o", out, "-q",
-                "--format", "both")
+        # the envelopes over the rows (the default takes their extremes over every step:
+        # test_envelopes_over_every_step)
+        text = RISER.replace("DURATION", "2.0") + "output: {envelope_sampling: rows}\n"
+        r = run("run", self.model(text), "-o", out, "-q", "--format", "both")
         self.assertEqual(r.returncode, 0, r.stderr)
         header, rows = read_csv(os.path.join(out, "timeseries.csv"))
         with h5py.File(os.path.join(out, "timeseries.h5"), "r") as f:
@@ -335,11 +337,11 @@ supports:
         self.assertFalse(os.path.exists(os.path.join(out, "vtk", "timeseries")))
 
     def test_envelopes_over_every_step(self):
-        # output.envelope_sampling: steps takes the envelopes' minimum and maximum over every
-        # step, not only the output rows: with rows every 10th step they equal those of the
-        # same run written at every step, bit for bit (the same states), while the mean stays
-        # the mean over the rows; without the key (rows) the maxima miss the peaks between
-        # the rows. From static equilibrium, a regular wave (2 m, 3 s) ramped in over 1 s,
+        # output.envelope_sampling: steps (the default) takes the envelopes' minimum and
+        # maximum over every step, not only the output rows: with rows every 10th step they
+        # equal those of the same run written at every step, bit for bit (the same states),
+        # while the mean stays the mean over the rows; with `rows` the maxima miss the peaks
+        # between the rows. From static equilibrium, a regular wave (2 m, 3 s) ramped in over 1 s,
         # fixed 0.01 s steps for 2 s (the riser alone: the free buoy has no statics).
         base = RISER.replace("DURATION", "2.0").replace("  step_control: adaptive\n",
                                                         "  initial_state: statics\n")
@@ -359,11 +361,13 @@ supports:
             header, env = read_csv(os.path.join(out, "riser.envelope.csv"))
             return out, header, env
 
-        out_s, header, steps = envelope("steps", base + "output: {envelope_sampling: steps}\n",
-                                        "both")
+        out_s, header, steps = envelope("steps", base, "both")  # the default
+        _, _, explicit = envelope("explicit", base + "output: {envelope_sampling: steps}\n",
+                                  "csv")
+        np.testing.assert_array_equal(explicit, steps)
         _, _, every = envelope("every", base.replace("output_interval: 0.1",
                                                      "output_interval: 0.01"), "csv")
-        _, _, rows = envelope("rows", base, "csv")
+        _, _, rows = envelope("rows", base + "output: {envelope_sampling: rows}\n", "csv")
         cols = {part: [i for i, h in enumerate(header) if h.endswith("." + part)]
                 for part in ("min", "max", "mean")}
         self.assertEqual(len(cols["max"]), 16)
@@ -380,7 +384,7 @@ supports:
         # measured 1.15e-2: a sine of the wave's period sampled every 0.1 s loses up to
         # 1 - cos(pi 0.1 / 3) = 5.5e-3 of its amplitude, the start's faster parts more
         self.assertGreater(gap, 2e-3)
-        # the mean over the 21 rows, as without the key
+        # the mean over the 21 rows, as with `rows`
         np.testing.assert_array_equal(steps[:, cols["mean"]], rows[:, cols["mean"]])
         along_header, along = read_csv(os.path.join(out_s, "riser.along.csv"))
         self.assertEqual(along.shape[0], 21 * 136)
@@ -395,7 +399,7 @@ supports:
             self.assertEqual(f["beams/riser/envelope"].attrs["rows"], 21)
         # a run resumed from its checkpoint at 1 s writes the same envelopes, byte for byte
         # (the checkpoint holds the extremes of every step before it)
-        text = base + "output: {envelope_sampling: steps}\n"
+        text = base
         ref = os.path.join(self.dir, "ck")
         r = run("run", self.model(text, "ck.yaml"), "-o", ref, "-q", "--format", "csv",
                 "--checkpoint-every", "1.0")

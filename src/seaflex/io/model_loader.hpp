@@ -52,9 +52,9 @@ struct OutputSettings {
   std::vector<std::string> bodies;
   /// Beam results along the length: per output row and envelopes, or envelopes only.
   enum class BeamResults { kAll, kEnvelope, kNone } beam_results = BeamResults::kAll;
-  /// The envelopes' minimum and maximum over every accepted step (true) or over the output
-  /// rows only (false, the default); their mean is over the rows either way.
-  bool envelope_steps = false;
+  /// The envelopes' minimum and maximum over every accepted step (true, the default) or
+  /// over the output rows only (false); their mean is over the rows either way.
+  bool envelope_steps = true;
   /// Result stations per element between the nodes (Gauss-Legendre points).
   int beam_gauss_points = 2;
   /// ParaView time series (vtk/ directory).

@@ -21,8 +21,8 @@ class Recorder {
   /// included) and valid only during the call.
   virtual void record(const State& state, std::span<const double> values) = 0;
   /// Every step the Simulation accepts between two output rows (the rows themselves go to
-  /// record()), for recorders that keep extremes over every step (the beam envelopes of
-  /// `output.envelope_sampling: steps`). state is valid only during the call; its
+  /// record()), for recorders that keep extremes over every step (the beam envelopes,
+  /// unless `output.envelope_sampling: rows`). state is valid only during the call; its
   /// multipliers are the integrator's, not brought up to date as for a row. Nothing by
   /// default.
   virtual void observe_step(const State& /*state*/) {}
