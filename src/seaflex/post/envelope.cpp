@@ -8,16 +8,8 @@ void Envelope::add(const MatX& values) {
   if (count_ == 0) {
     min_ = max_ = sum_ = values;
   } else {
-    if (values.rows() != min_.rows() || values.cols() != min_.cols())
-      throw std::invalid_argument("Envelope::add: the table changed size");
-    // cwiseMin/Max would drop NaN in favour of the number: keep NaN where it applies
-    for (Index j = 0; j < values.cols(); ++j)
-      for (Index i = 0; i < values.rows(); ++i) {
-        const double v = values(i, j);
-        if (v < min_(i, j)) min_(i, j) = v;
-        if (v > max_(i, j)) max_(i, j) = v;
-        sum_(i, j) += v;
-      }
+    extend(values);  // checks the size
+    sum_ += values;
   }
   ++count_;
 }
@@ -25,7 +17,8 @@ void Envelope::add(const MatX& values) {
 void Envelope::extend(const MatX& values) {
   if (count_ == 0) return;
   if (values.rows() != min_.rows() || values.cols() != min_.cols())
-    throw std::invalid_argument("Envelope::extend: the table changed size");
+    throw std::invalid_argument("Envelope: the table changed size");
+  // cwiseMin/Max would drop NaN in favour of the number: keep NaN where it applies
   for (Index j = 0; j < values.cols(); ++j)
     for (Index i = 0; i < values.rows(); ++i) {
       const double v = values(i, j);
