@@ -56,25 +56,18 @@ dynamics: {{{}}}
                      kG, kMass, kK, dynamics);
 }
 
-// Forwards to an integrator and keeps z, vz and the line's tension after every step the
-// Simulation accepts (a step it rejects is taken back in reject_step()), so that the peak
-// between output rows is seen.
-class Watch : public Integrator {
+// Forwards every call to an integrator (save and restore included); a test's spy sees each
+// step() through after_step() and each reject_step() through after_reject()
+class Forwarding : public Integrator {
  public:
-  Watch(Integrator& inner, const ChannelList& channels) : inner_(inner), channels_(channels) {
-    for (std::size_t i = 0; i < channels.size(); ++i) {
-      if (channels[i].name == "weight.z") z_ = i;
-      if (channels[i].name == "weight.vz") vz_ = i;
-      if (channels[i].name == "line.tension") tension_ = i;
-    }
-  }
+  explicit Forwarding(Integrator& inner) : inner_(inner) {}
   std::string_view name() const override { return inner_.name(); }
   void start(const Dae& dae, State& state) override { inner_.start(dae, state); }
+  const IntegratorStats& stats() const override { return inner_.stats(); }
   StepReport step(const Dae& dae, State& state, double h) override {
     const StepReport r = inner_.step(dae, state, h);
     local_error_ = inner_.local_error();
-    if (r.ok) rows.push_back({channels_[z_].value(state), channels_[vz_].value(state), 0.0});
-    if (r.ok) rows.back()[2] = channels_[tension_].value(state);
+    after_step(state, r);
     return r;
   }
   void update_multipliers(const Dae& dae, State& state) override {
@@ -83,7 +76,29 @@ class Watch : public Integrator {
   int local_error_order() const override { return inner_.local_error_order(); }
   void reject_step() override {
     inner_.reject_step();
-    rows.pop_back();
+    after_reject();
+  }
+  bool save(CheckpointWriter& out) const override { return inner_.save(out); }
+  void restore(const Dae& dae, const CheckpointReader& in) override { inner_.restore(dae, in); }
+
+ protected:
+  virtual void after_step(const State& state, const StepReport& r) = 0;
+  virtual void after_reject() = 0;
+
+ private:
+  Integrator& inner_;
+};
+
+// Keeps z, vz and the line's tension after every step the Simulation accepts (a step it
+// rejects is taken back in reject_step()), so that the peak between output rows is seen.
+class Watch : public Forwarding {
+ public:
+  Watch(Integrator& inner, const ChannelList& channels) : Forwarding(inner), channels_(channels) {
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+      if (channels[i].name == "weight.z") z_ = i;
+      if (channels[i].name == "weight.vz") vz_ = i;
+      if (channels[i].name == "line.tension") tension_ = i;
+    }
   }
   // the highest point of the free flight after the impact: z + vz^2 / 2g from the first
   // accepted state that rises off the slack line (exact: the flight is ballistic); the
@@ -106,8 +121,15 @@ class Watch : public Integrator {
   }
   std::vector<std::array<double, 3>> rows;
 
+ protected:
+  void after_step(const State& state, const StepReport& r) override {
+    if (r.ok)
+      rows.push_back({channels_[z_].value(state), channels_[vz_].value(state),
+                      channels_[tension_].value(state)});
+  }
+  void after_reject() override { rows.pop_back(); }
+
  private:
-  Integrator& inner_;
   const ChannelList& channels_;
   std::size_t z_ = 0, vz_ = 0, tension_ = 0;
 };
@@ -247,35 +269,16 @@ TEST(AdaptiveStepControl, ErrorEstimatesHaveTheirOrder) {
 
 namespace {
 
-// Forwards to an integrator (save and restore included) and keeps, for every step() call,
-// whether the Simulation took the step: false when the step failed or was taken back
-// (reject_step)
-class Events : public Integrator {
+// Keeps, for every step() call, whether the Simulation took the step: false when the step
+// failed or was taken back (reject_step)
+class Events : public Forwarding {
  public:
-  explicit Events(Integrator& inner) : inner_(inner) {}
-  std::string_view name() const override { return inner_.name(); }
-  void start(const Dae& dae, State& state) override { inner_.start(dae, state); }
-  const IntegratorStats& stats() const override { return inner_.stats(); }
-  StepReport step(const Dae& dae, State& state, double h) override {
-    const StepReport r = inner_.step(dae, state, h);
-    local_error_ = inner_.local_error();
-    kept.push_back(r.ok);
-    return r;
-  }
-  void update_multipliers(const Dae& dae, State& state) override {
-    inner_.update_multipliers(dae, state);
-  }
-  int local_error_order() const override { return inner_.local_error_order(); }
-  void reject_step() override {
-    inner_.reject_step();
-    kept.back() = false;
-  }
-  bool save(CheckpointWriter& out) const override { return inner_.save(out); }
-  void restore(const Dae& dae, const CheckpointReader& in) override { inner_.restore(dae, in); }
+  using Forwarding::Forwarding;
   std::vector<bool> kept;
 
- private:
-  Integrator& inner_;
+ protected:
+  void after_step(const State&, const StepReport& r) override { kept.push_back(r.ok); }
+  void after_reject() override { kept.back() = false; }
 };
 
 // the text of examples/double_pendulum.yaml with its dynamics section replaced
