@@ -331,11 +331,13 @@ double CableElasticity::axial_strain(const Vec12& e, double xi) const {
 
 Vec3 CableElasticity::curvature_vector(const Vec12& e, double xi) const {
   const Mat34 R = relative_nodes(e);
-  const Vec3 a = R * shape_dx(xi, l_);
-  const Vec3 b = R * shape_dxx(xi, l_);
-  const double g = a.dot(a);
-  if (bending_ == BendingModel::kExact) return a.cross(b) / g;  // d theta / dx
-  return a.cross(b) / (g * std::sqrt(g));                       // thesis eq. (14)
+  return curvature_vector(Vec3(R * shape_dx(xi, l_)), Vec3(R * shape_dxx(xi, l_)));
+}
+
+Vec3 CableElasticity::curvature_vector(const Vec3& rp, const Vec3& rpp) const {
+  const double g = rp.dot(rp);
+  if (bending_ == BendingModel::kExact) return rp.cross(rpp) / g;  // d theta / dx
+  return rp.cross(rpp) / (g * std::sqrt(g));                       // thesis eq. (14)
 }
 
 double CableElasticity::curvature(const Vec12& e, double xi) const {

@@ -91,6 +91,9 @@ class CableElasticity {
   /// (per reference length) for kExact, n = 3 (thesis eq. 14) for kExactDeformed and for
   /// T1 and T2, which approximate eq. (14). EI times it is the bending moment vector.
   Vec3 curvature_vector(const Vec12& e, double xi) const;
+  /// The same from r' and r'' at the point (shape_dx and shape_dxx of length() times the
+  /// relative nodes), for callers that share them between quantities.
+  Vec3 curvature_vector(const Vec3& rp, const Vec3& rpp) const;
   /// |curvature_vector(e, xi)| (1/m).
   double curvature(const Vec12& e, double xi) const;
 

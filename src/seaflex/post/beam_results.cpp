@@ -55,25 +55,36 @@ BeamResults::BeamResults(const AncfBeam& beam, std::vector<PipePressure> pressur
     for (double xi : rule.points)
       stations_.push_back({k, xi, beam.node_arc_length(k) + xi * beam.element_length(k), -1});
   }
+  for (const BeamStation& st : stations_) {
+    own_.push_back(sample(st.element, st.xi));
+    // interior node: the mean of the two elements
+    left_.push_back(st.node > 0 && st.node < n ? sample(st.node - 1, 1.0) : Sample{});
+  }
 }
 
-BeamResults::Point BeamResults::evaluate(const State& state, int element, double xi) const {
+BeamResults::Sample BeamResults::sample(int element, double xi) const {
   const double l = beam_.element_length(element);
-  const ancf_cable::Vec12 e = beam_.element_coordinates(state.q, element);
-  // r' (and, in curvature_vector, r'') from the relative node matrix: free of the
-  // round-off of far positions
-  const ancf_cable::Mat34 R = ancf_cable::relative_nodes(e);
+  const double l_kernel = beam_.elasticity(element).length();
+  return {element, ancf_cable::shape(xi, l), ancf_cable::shape_dx(xi, l),
+          ancf_cable::shape_dx(xi, l_kernel), ancf_cable::shape_dxx(xi, l_kernel)};
+}
+
+BeamResults::Point BeamResults::evaluate(const Sample& sample, const Coordinates& c) const {
+  const int element = sample.element;
+  const double l = beam_.element_length(element);
+  // r' (and r'') from the relative node matrix: free of the round-off of far positions
   Point p;
-  p.r = ancf_cable::as_nodes(e) * ancf_cable::shape(xi, l);
-  p.rp = R * ancf_cable::shape_dx(xi, l);
+  p.r = ancf_cable::as_nodes(c.e) * sample.s;
+  p.rp = c.R * sample.s_x;
   if (beam_.options().axial == ancf_cable::AxialModel::kL1) {
-    p.eps = ((R.col(2) - R.col(0)).norm() - l) / l;  // thesis eq. (24)
+    p.eps = ((c.R.col(2) - c.R.col(0)).norm() - l) / l;  // thesis eq. (24)
   } else {
     p.eps = 0.5 * (p.rp.squaredNorm() - 1.0);  // thesis eq. (12)
   }
   // the curvature of the beam's bending model: the moment the model carries
   const BeamSection& sec = beam_.section(element);
-  p.m = sec.EI() * beam_.elasticity(element).curvature_vector(e, xi);
+  p.m = sec.EI() * beam_.elasticity(element).curvature_vector(Vec3(c.R * sample.s_x_kernel),
+                                                              Vec3(c.R * sample.s_xx_kernel));
   p.t_eff = sec.EA() * p.eps * p.rp.norm();
   return p;
 }
@@ -84,7 +95,18 @@ void BeamResults::compute(const State& state, MatX& out) const {
   double z_top = -std::numeric_limits<double>::infinity();
   for (int k = 0; k < beam_.num_nodes(); ++k)
     z_top = std::max(z_top, state.q[beam_.node_index(k) + 2]);
-  const int n = beam_.num_elements();
+  // each element's coordinates once: a station needs its own element and, at an interior
+  // node, the one before it, which the previous stations used (neighbours alternate slots)
+  std::array<Coordinates, 2> cache;
+  auto coordinates = [&](int element) -> const Coordinates& {
+    Coordinates& c = cache[static_cast<std::size_t>(element & 1)];
+    if (c.element != element) {
+      c.element = element;
+      c.e = beam_.element_coordinates(state.q, element);
+      c.R = ancf_cable::relative_nodes(c.e);
+    }
+    return c;
+  };
   for (Index i = 0; i < num_stations(); ++i) {
     const BeamStation& st = stations_[static_cast<std::size_t>(i)];
     // a node between two sections takes the section of the element after it
@@ -95,9 +117,10 @@ void BeamResults::compute(const State& state, MatX& out) const {
     const double A_i = 0.25 * kPi * pressure.contents_diameter * pressure.contents_diameter;
     const bool pipe = sec.outer_diameter > 0.0;
     const double ro = 0.5 * sec.outer_diameter, ri = 0.5 * sec.inner_diameter;
-    Point p = evaluate(state, st.element, st.xi);
-    if (st.node > 0 && st.node < n) {  // interior node: mean of the two elements
-      const Point left = evaluate(state, st.node - 1, 1.0);
+    const auto at = static_cast<std::size_t>(i);
+    Point p = evaluate(own_[at], coordinates(own_[at].element));
+    if (left_[at].element >= 0) {  // interior node: mean of the two elements
+      const Point left = evaluate(left_[at], coordinates(left_[at].element));
       p.eps = 0.5 * (p.eps + left.eps);
       p.m = 0.5 * (p.m + left.m);
       p.t_eff = 0.5 * (p.t_eff + left.t_eff);
@@ -128,12 +151,13 @@ void BeamResults::compute(const State& state, MatX& out) const {
       const double sb = M * ro / sec.second_moment;
       const double sr = -p_e;
       const double sh = (2.0 * p_i * ri * ri - p_e * (ro * ro + ri * ri)) / (ro * ro - ri * ri);
-      double vm = 0.0;
+      double vm2 = 0.0;  // the larger square: one square root (sqrt is monotone)
       for (double sign : {1.0, -1.0}) {
         const double sz = T_wall / sec.area + sign * sb;
-        vm = std::max(vm, std::sqrt(0.5 * ((sz - sh) * (sz - sh) + (sh - sr) * (sh - sr) +
-                                           (sr - sz) * (sr - sz))));
+        vm2 = std::max(
+            vm2, 0.5 * ((sz - sh) * (sz - sh) + (sh - sr) * (sh - sr) + (sr - sz) * (sr - sz)));
       }
+      const double vm = std::sqrt(vm2);
       row(static_cast<int>(BeamQuantity::kStressBending)) = sb;
       row(static_cast<int>(BeamQuantity::kStressVonMises)) = vm;
     } else {

@@ -117,11 +117,27 @@ class BeamResults {
     double eps = 0.0;
     double t_eff = 0.0;  // EA eps |r'|, the effective tension
   };
-  Point evaluate(const State& state, int element, double xi) const;
+  // One element at one xi, its shape functions computed once: s and s' with the element's
+  // length (r, r'), s' and s'' with its elasticity kernel's length (the curvature, as
+  // CableElasticity::curvature_vector(e, xi) takes them)
+  struct Sample {
+    int element = -1;  // -1: none (the left side of a station that is not an interior node)
+    ancf_cable::Vec4 s, s_x, s_x_kernel, s_xx_kernel;
+  };
+  // An element's coordinates and relative node matrix, shared by its samples
+  struct Coordinates {
+    int element = -1;
+    ancf_cable::Vec12 e;
+    ancf_cable::Mat34 R;
+  };
+  Sample sample(int element, double xi) const;
+  Point evaluate(const Sample& sample, const Coordinates& c) const;
 
   const AncfBeam& beam_;
   std::vector<PipePressure> pressures_;  // per beam section
   std::vector<BeamStation> stations_;
+  std::vector<Sample> own_;   // per station: its element at its xi
+  std::vector<Sample> left_;  // per station: at an interior node, the element before it at 1
 };
 
 }  // namespace seaflex::post

@@ -18,13 +18,18 @@ void Envelope::extend(const MatX& values) {
   if (count_ == 0) return;
   if (values.rows() != min_.rows() || values.cols() != min_.cols())
     throw std::invalid_argument("Envelope: the table changed size");
-  // cwiseMin/Max would drop NaN in favour of the number: keep NaN where it applies
-  for (Index j = 0; j < values.cols(); ++j)
-    for (Index i = 0; i < values.rows(); ++i) {
-      const double v = values(i, j);
-      if (v < min_(i, j)) min_(i, j) = v;
-      if (v > max_(i, j)) max_(i, j) = v;
-    }
+  // cwiseMin/Max would drop NaN in favour of the number: keep NaN where it applies (a
+  // comparison with NaN is false, so a NaN extreme stays). Written as selects over the
+  // whole storage, not as conditional stores, so that the compiler can use vector min/max
+  // (their operand order gives the same NaN rule)
+  const double* v = values.data();
+  double* lo = min_.data();
+  double* hi = max_.data();
+  const Index size = values.size();
+  for (Index i = 0; i < size; ++i) {
+    lo[i] = v[i] < lo[i] ? v[i] : lo[i];
+    hi[i] = v[i] > hi[i] ? v[i] : hi[i];
+  }
 }
 
 MatX Envelope::mean() const {
