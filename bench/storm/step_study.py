@@ -10,7 +10,7 @@ against the reference, with the wall time of each run (one thread).
     /usr/bin/python3 bench/storm/step_study.py SEAFLEX [--duration 630]
         [--steps 0.4 0.2 0.1 0.05] [--reference 0.025] [--kinematics grid]
         [--reference-kinematics exact] [--elements 100] [--work DIR]
-        [--envelope-sampling rows|steps]
+        [--envelope-sampling rows|steps] [--seed 1] [--short-crested]
 The reference runs at the default Newton tolerance, 1e-10 (the storm files: 1e-9).
 --kinematics (and --reference-kinematics) is `exact`, `grid` (the storm files' spacings,
 ds 0.5 m, dt 0.2 s and dz_growth 0.2), or e.g. `grid:ds=0.25,dt=0.1` for other spacings
@@ -39,13 +39,21 @@ sys.path.insert(0, str(here))
 from make_storm import storm_model  # noqa: E402
 
 RAO = str(here.parent.parent / "examples" / "drilling_rig_raos.csv")
+SC_RAO = str(here / "storm_sc_raos.csv")
 RAMP = 30.0
 
 
 def variant(n, kinematics, duration, step, output, rho_inf=None, tolerance=None,
-            envelope_steps=True):
+            envelope_steps=True, seed=None, short_crested=False):
     kind, _, spacing = kinematics.partition(":")
-    text = storm_model(n, 200, kind, duration, "csv", RAO)
+    if short_crested:  # storm_sc_n<n>.yaml: 22 components in each of 9 directions, exact sum
+        assert kind == "exact", "the short-crested sea needs --kinematics exact"
+        text = storm_model(n, 22, kind, duration, "csv", SC_RAO, spread=True)
+    else:
+        text = storm_model(n, 200, kind, duration, "csv", RAO)
+    if seed is not None:  # another realization of the same sea
+        text, k = re.subn(r"\n    seed: [0-9]+\n", f"\n    seed: {seed}\n", text)
+        assert k == 1
     if tolerance is not None:
         text, k = re.subn(r"\n  tolerance: [0-9.e+-]+\n", f"\n  tolerance: {tolerance:g}\n", text)
         assert k == 1
@@ -125,6 +133,11 @@ def main():
     p.add_argument("--envelope-sampling", choices=["rows", "steps"], default="steps",
                    help="output.envelope_sampling of every run: the maxima over every step "
                         "(the default) or over the output rows only")
+    p.add_argument("--short-crested", action="store_true",
+                   help="the short-crested sea of storm_sc_n<N>.yaml (with --kinematics exact "
+                        "and --reference-kinematics exact)")
+    p.add_argument("--seed", type=int,
+                   help="the sea's random seed for every run (the storm files': 1)")
     p.add_argument("--rho-inf", type=float,
                    help="generalized-alpha's rho_inf for the runs at --steps (the reference "
                         "keeps the storm file's)")
@@ -142,10 +155,13 @@ def main():
             tol = 1e-10 if h == a.reference else None
             steps = a.envelope_sampling == "steps"
             res[(h, kin)] = r = run(
-                a.seaflex, variant(a.elements, kin, a.duration, h, a.output, rho, tol, steps), tmp,
-                f"storm_{kin.replace(':', '_').replace(',', '_').replace('=', '')}"
+                a.seaflex,
+                variant(a.elements, kin, a.duration, h, a.output, rho, tol, steps, a.seed,
+                        a.short_crested), tmp,
+                f"storm{'_sc' if a.short_crested else ''}_{kin.replace(':', '_').replace(',', '_').replace('=', '')}"
                 f"_{h:g}_{a.duration:g}_{a.elements}_{a.output:g}"
-                + (f"_rho{rho:g}" if rho is not None else "") + ("" if steps else "_rows"))
+                + (f"_rho{rho:g}" if rho is not None else "") + ("" if steps else "_rows")
+                + (f"_seed{a.seed}" if a.seed is not None else ""))
             print(f"# h = {h:g} s, {kin}: {r.get('failed') or r['summary']} "
                   f"({r['wall']:.1f} s wall)", flush=True)
     ref = res[(a.reference, a.reference_kinematics)]
