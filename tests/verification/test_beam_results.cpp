@@ -213,3 +213,77 @@ loads:
   }
   EXPECT_EQ(gauss, 20);
 }
+
+// BeamResults::compute takes each station's shape functions from a table made once and each
+// element's coordinates once for all its stations (post/beam_results.hpp). Against the
+// evaluation it replaced, point by point from the element's coordinates
+// (CableElasticity::curvature_vector(e, xi), the shape functions at xi): a cantilever bent
+// out of its plane by a tip force with three components, with 0, 2 and 3 stations per element
+// between the nodes. Position, strain, effective tension EA eps |r'| and moment vector at
+// every station (the mean of the two elements at an interior node), and the von Mises stress
+// of the pipe in air, |T / A| + M r_o / I (no pressures). Tolerance 1e-13 relative: the same
+// arithmetic, which a build that contracts multiply-adds may round differently.
+TEST(BeamResults, StationsFromTheirTablesEqualThePointwiseEvaluation) {
+  const Solved s = solve(R"(
+environment: {gravity: 0}
+bodies:
+  beam: {type: ancf_beam, start: [0, 0, 0], end: [10, 0, 0], elements: 7, outer_diameter: 0.2,
+         inner_diameter: 0.16, youngs_modulus: 210e9, density: 7850}
+supports:
+  - {body: beam, node: start, type: clamped}
+loads:
+  - {type: point_force, body: beam, node: end, force: [-2.0e4, 6.0e4, -1.0e5]}
+)");
+  const AncfBeam& beam = *s.beam;
+  const BeamSection& sec = beam.section(0);
+  struct Point {
+    Vec3 r, m;
+    double eps, t_eff;
+  };
+  auto point = [&](int el, double xi) {  // by hand, from the element's coordinates
+    const double l = beam.element_length(el);
+    const ancf_cable::Vec12 e = beam.element_coordinates(s.state.q, el);
+    const Vec3 rp = ancf_cable::relative_nodes(e) * ancf_cable::shape_dx(xi, l);
+    const double eps = 0.5 * (rp.squaredNorm() - 1.0);  // thesis eq. (12)
+    return Point{Eigen::Map<const ancf_cable::Mat34>(e.data()) * ancf_cable::shape(xi, l),
+                 sec.EI() * beam.elasticity(el).curvature_vector(e, xi), eps,
+                 sec.EA() * eps * rp.norm()};
+  };
+  constexpr double kTol = 1e-13;
+  for (int gauss : {0, 2, 3}) {
+    const post::BeamResults results(beam, io::pipe_pressure(s.model, beam), gauss);
+    MatX out;
+    results.compute(s.state, out);
+    ASSERT_EQ(results.num_stations(), 8 + 7 * gauss);
+    double m_max = 0.0;
+    for (Index i = 0; i < results.num_stations(); ++i) {
+      const post::BeamStation& st = results.stations()[static_cast<std::size_t>(i)];
+      Point p = point(st.element, st.xi);
+      if (st.node > 0 && st.node < 7) {
+        const Point left = point(st.node - 1, 1.0);
+        p.m = 0.5 * (p.m + left.m);
+        p.eps = 0.5 * (p.eps + left.eps);
+        p.t_eff = 0.5 * (p.t_eff + left.t_eff);
+      }
+      const std::string where = fmt::format("station {}, {} per element", i, gauss);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(out(i, col(post::BeamQuantity::kX) + c), p.r[c], kTol * 10.0) << where;
+      EXPECT_NEAR(out(i, col(post::BeamQuantity::kStrain)), p.eps, kTol * std::abs(p.eps)) << where;
+      EXPECT_NEAR(out(i, col(post::BeamQuantity::kTensionEffective)), p.t_eff,
+                  kTol * std::abs(p.t_eff))
+          << where;
+      EXPECT_EQ(out(i, col(post::BeamQuantity::kTensionWall)),
+                out(i, col(post::BeamQuantity::kTensionEffective)));  // in air, empty
+      const double M = p.m.norm();
+      m_max = std::max(m_max, M);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(out(i, col(post::BeamQuantity::kMomentX) + c), p.m[c], kTol * M) << where;
+      EXPECT_NEAR(out(i, col(post::BeamQuantity::kMoment)), M, kTol * M) << where;
+      const double vm = std::abs(p.t_eff / sec.area) + M * 0.1 / sec.second_moment;
+      EXPECT_NEAR(out(i, col(post::BeamQuantity::kStressVonMises)), vm, 1e-12 * vm) << where;
+    }
+    // the bending is not trivial: the root moment is |L x F| of the tip force's transverse
+    // components (within the deflection's change of the lever arm)
+    EXPECT_GT(m_max, 0.9 * 10.0 * std::hypot(6.0e4, 1.0e5));
+  }
+}
