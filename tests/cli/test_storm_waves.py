@@ -117,17 +117,19 @@ def main(seaflex, source):
           (eta.var(), m0, 100 * (eta.var() / m0 - 1)))
     if abs(eta.var() / m0 - 1) > 0.04:  # 2 % in Hs is 4 % in variance
         failures.append("variance %.5f not within 4 %% of m0 %.5f" % (eta.var(), m0))
-    # 20 s (200 steps, past the first columns' fills): the kinematics time is estimated from
-    # one call in 16 scaled by 16, so one sampled call that the machine's load preempted
-    # weighs 16 times; over 2 s (the assembly about 5 ms) that once made the estimate equal
-    # the whole assembly (CI, 2026-11-27)
+    # 20 s (120 steps of the file's 0.5/3 s, past the first columns' fills): the kinematics
+    # time is estimated from one call in 16 scaled by 16, so one sampled call that the
+    # machine's load preempted weighs 16 times; over 2 s (the assembly about 5 ms) that once
+    # made the estimate equal the whole assembly (CI, 2026-11-27)
     out = subprocess.run([seaflex, "bench", os.path.join(source, "bench", "storm", "storm_n100.yaml"),
                           "--duration", "20"], capture_output=True, text=True, check=True).stdout
     asm = re.search(r"wall time: assembly ([0-9.]+) s", out)
     split = re.search(r"assembly split: wave kinematics ([0-9.]+) s \([0-9]+ %\), other forces "
                       r"and tangents ([0-9.-]+) s", out)
-    its = re.search(r"steps: 200 accepted, 0 rejected, smallest 0.1 s; ([0-9.]+) iterations per "
-                    r"step", out)
+    with open(os.path.join(source, "bench", "storm", "storm_n100.yaml")) as f:
+        step = float(re.search(r"\n  time_step: ([0-9.]+)\n", f.read()).group(1))
+    its = re.search(r"steps: %d accepted, 0 rejected, smallest %g s; ([0-9.]+) iterations per "
+                    r"step" % (round(20 / step), step), out)
     if not (asm and split and its):
         failures.append("seaflex bench output lacks the split or the iterations:\n" + out)
     else:
