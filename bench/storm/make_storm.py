@@ -252,7 +252,7 @@ def storm_model(n, components=200, kinematics="grid", duration=10830.0, fmt="hdf
         step_comment = (
             "  # 0.5 s / 3 (the output interval must be a whole number of steps), about Tp / 60: the\n"
             "  # largest such step that keeps the 3-hour storm's maxima within 1 % of the step divided\n"
-            "  # by 4 in four realizations of the sea (0.57 % at worst; 0.25 s: 1.6 %), with 100 and\n"
+            "  # by 4 in four realizations of the sea (0.66 % at worst; 0.25 s: 1.6 %), with 100 and\n"
             "  # 1000 elements (docs/performance.md, \"The storm files' time step and refresh rate\")")
     # Morison Gauss points: 2 on 3 m elements, 1 (the midpoint) on elements of 1 m or less
     # (measured: docs/performance.md, "Morison Gauss points", "One Morison point on 0.3 m
