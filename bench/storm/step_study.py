@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """The largest step that keeps the storm's statistics within 1 % (issue 21 item 4;
-docs/performance.md, "Time step of the storm"). Runs a shorter window of
-bench/storm/storm_n100.yaml (make_storm.storm_model with dynamics.duration changed, 30 s
-ramp included) at several time steps and a reference at a smaller step, and tabulates
+docs/performance.md, "Time step of the storm" and "The storm files' time step and refresh
+rate"). Runs bench/storm/storm_n<N>.yaml (or, with --short-crested, storm_sc_n<N>.yaml;
+make_storm.storm_model with dynamics.duration changed, 30 s ramp included, and with --seed
+another realization of the sea) at several time steps and a reference at a smaller step, and
+tabulates
     max top effective tension, max bending moment along the riser, max von Mises stress
     along the riser (riser.envelope.csv), RMS of the riser's top angle from the vertical
     over t >= 30 s (from the top node's slope, output channel riser.n<N>.slope_*)
@@ -21,7 +23,8 @@ The maxima are over every step of each run (output.envelope_sampling: steps, sea
 default); with --envelope-sampling rows over its rows, written at the same times in every
 run, every --output s (default 0.4 s, a multiple of every step), so that they are taken
 over the same samples whatever the step (the tables of docs/performance.md before the
-tenth session)."""
+tenth session). Every step must divide --output (the loader asks for a whole number of
+steps): e.g. --output 0.5 for 0.25, 0.16666666666666667 (0.5/3), 0.125 and 0.1."""
 import argparse
 import csv
 import hashlib
@@ -47,7 +50,9 @@ def variant(n, kinematics, duration, step, output, rho_inf=None, tolerance=None,
             envelope_steps=True, seed=None, short_crested=False):
     kind, _, spacing = kinematics.partition(":")
     if short_crested:  # storm_sc_n<n>.yaml: 22 components in each of 9 directions, exact sum
-        assert kind == "exact", "the short-crested sea needs --kinematics exact"
+        if kind != "exact":
+            raise ValueError("the short-crested sea needs the exact sum (the grid needs a "
+                             "long-crested sea): give --kinematics exact")
         text = storm_model(n, 22, kind, duration, "csv", SC_RAO, spread=True)
     else:
         text = storm_model(n, 200, kind, duration, "csv", RAO)
@@ -66,7 +71,8 @@ def variant(n, kinematics, duration, step, output, rho_inf=None, tolerance=None,
         text, k = re.subn(r"\n    kinematics: grid[^\n]*\n",
                           f"\n    kinematics: grid\n    grid: {{{grid}}}\n", text)
         assert k == 1
-    text, k = re.subn(r"\n  time_step: [0-9.]+\n", f"\n  time_step: {step:.12g}\n", text)
+    # every digit of the step (0.5/3 s as the files write it)
+    text, k = re.subn(r"\n  time_step: [0-9.]+\n", f"\n  time_step: {step!r}\n", text)
     assert k == 1
     text, k = re.subn(r"\n  output_interval: [0-9.]+\n", f"\n  output_interval: {output:g}\n",
                       text)
@@ -142,6 +148,9 @@ def main():
                    help="generalized-alpha's rho_inf for the runs at --steps (the reference "
                         "keeps the storm file's)")
     a = p.parse_args()
+    if a.short_crested and (a.kinematics != "exact" or a.reference_kinematics != "exact"):
+        p.error("--short-crested needs --kinematics exact and --reference-kinematics exact "
+                "(the grid needs a long-crested sea)")
     res = {}
     if a.work:
         os.makedirs(a.work, exist_ok=True)

@@ -351,7 +351,7 @@ dynamics: {integrator: generalized_alpha, time_step: 0.1, duration: 3, output_in
         # gives the next state (the restore formed it at the latter)
         with open(os.path.join(SRC, "bench", "storm", "storm_n100.yaml")) as f:
             text = f.read()
-        step = re.search(r"\n  time_step: ([0-9.]+)\n", text).group(1)
+        step = re.search(r"\n  time_step: ([0-9.eE+-]+)\n", text).group(1)
         for old, new in (("  duration: 10830", "  duration: 30"),
                          ("  output_interval: 0.5", "  output_interval: " + step),
                          ("../../examples/", os.path.abspath(EXAMPLES) + "/")):

@@ -217,14 +217,18 @@ loads:
 // BeamResults::compute takes each station's shape functions from a table made once and each
 // element's coordinates once for all its stations (post/beam_results.hpp). Against the
 // evaluation it replaced, point by point from the element's coordinates
-// (CableElasticity::curvature_vector(e, xi), the shape functions at xi): a cantilever bent
-// out of its plane by a tip force with three components, with 0, 2 and 3 stations per element
-// between the nodes. Position, strain, effective tension EA eps |r'| and moment vector at
-// every station (the mean of the two elements at an interior node), and the von Mises stress
-// of the pipe in air, |T / A| + M r_o / I (no pressures). Tolerance 1e-13 relative: the same
+// (CableElasticity::curvature_vector(e, xi), the shape functions at xi): cantilevers bent out
+// of their plane by a tip force with three components, with 0, 2 and 3 stations per element
+// between the nodes; one of 7 equal elements with the default models, one of two sections of
+// unequal elements (3 of 1.5 m, 4 of 1.375 m: two elasticity kernels) with the L1 axial
+// model (chord strain) and T2 (the deformed-length curvature). Position, strain, effective
+// tension EA eps |r'| and moment vector at every station (the mean of the two elements at an
+// interior node), and the von Mises stress of the pipe in air, |T / A| + M r_o / I.
+// Tolerances: 1e-13 of each quantity's scale (10 m for positions, 1 for the strain, whose
+// terms |r'|^2 are of order 1, EA for the tension, the root moment for the moments): the same
 // arithmetic, which a build that contracts multiply-adds may round differently.
 TEST(BeamResults, StationsFromTheirTablesEqualThePointwiseEvaluation) {
-  const Solved s = solve(R"(
+  const std::string uniform = R"(
 environment: {gravity: 0}
 bodies:
   beam: {type: ancf_beam, start: [0, 0, 0], end: [10, 0, 0], elements: 7, outer_diameter: 0.2,
@@ -233,57 +237,75 @@ supports:
   - {body: beam, node: start, type: clamped}
 loads:
   - {type: point_force, body: beam, node: end, force: [-2.0e4, 6.0e4, -1.0e5]}
-)");
-  const AncfBeam& beam = *s.beam;
-  const BeamSection& sec = beam.section(0);
-  struct Point {
-    Vec3 r, m;
-    double eps, t_eff;
-  };
-  auto point = [&](int el, double xi) {  // by hand, from the element's coordinates
-    const double l = beam.element_length(el);
-    const ancf_cable::Vec12 e = beam.element_coordinates(s.state.q, el);
-    const Vec3 rp = ancf_cable::relative_nodes(e) * ancf_cable::shape_dx(xi, l);
-    const double eps = 0.5 * (rp.squaredNorm() - 1.0);  // thesis eq. (12)
-    return Point{Eigen::Map<const ancf_cable::Mat34>(e.data()) * ancf_cable::shape(xi, l),
-                 sec.EI() * beam.elasticity(el).curvature_vector(e, xi), eps,
-                 sec.EA() * eps * rp.norm()};
-  };
-  constexpr double kTol = 1e-13;
-  for (int gauss : {0, 2, 3}) {
-    const post::BeamResults results(beam, io::pipe_pressure(s.model, beam), gauss);
-    MatX out;
-    results.compute(s.state, out);
-    ASSERT_EQ(results.num_stations(), 8 + 7 * gauss);
-    double m_max = 0.0;
-    for (Index i = 0; i < results.num_stations(); ++i) {
-      const post::BeamStation& st = results.stations()[static_cast<std::size_t>(i)];
-      Point p = point(st.element, st.xi);
-      if (st.node > 0 && st.node < 7) {
-        const Point left = point(st.node - 1, 1.0);
-        p.m = 0.5 * (p.m + left.m);
-        p.eps = 0.5 * (p.eps + left.eps);
-        p.t_eff = 0.5 * (p.t_eff + left.t_eff);
+)";
+  std::string sections = uniform;
+  sections.replace(sections.find("elements: 7"), 11,
+                   "axial_model: L1, bending_model: T2,\n         sections: "
+                   "[{name: a, length: 4.5, segment_length: 1.5}, {name: b, length: 5.5, "
+                   "segment_length: 1.4}]");
+  const double scale_m = 10.0 * std::hypot(6.0e4, 1.0e5);  // the root moment, about
+  for (const std::string& model : {uniform, sections}) {
+    const Solved s = solve(model);
+    const AncfBeam& beam = *s.beam;
+    const int n = beam.num_elements();
+    ASSERT_EQ(n, 7);
+    const bool l1 = beam.options().axial == ancf_cable::AxialModel::kL1;
+    struct Point {
+      Vec3 r, m;
+      double eps, t_eff;
+    };
+    auto point = [&](int el, double xi) {  // by hand, from the element's coordinates
+      const double l = beam.element_length(el);
+      const BeamSection& sec = beam.section(el);
+      const ancf_cable::Vec12 e = beam.element_coordinates(s.state.q, el);
+      const ancf_cable::Mat34 R = ancf_cable::relative_nodes(e);
+      const Vec3 rp = R * ancf_cable::shape_dx(xi, l);
+      const double eps = l1 ? ((R.col(2) - R.col(0)).norm() - l) / l  // thesis eq. (24)
+                            : 0.5 * (rp.squaredNorm() - 1.0);         // thesis eq. (12)
+      return Point{Eigen::Map<const ancf_cable::Mat34>(e.data()) * ancf_cable::shape(xi, l),
+                   sec.EI() * beam.elasticity(el).curvature_vector(e, xi), eps,
+                   sec.EA() * eps * rp.norm()};
+    };
+    constexpr double kTol = 1e-13;
+    for (int gauss : {0, 2, 3}) {
+      const post::BeamResults results(beam, io::pipe_pressure(s.model, beam), gauss);
+      MatX out;
+      results.compute(s.state, out);
+      ASSERT_EQ(results.num_stations(), n + 1 + n * gauss);
+      double m_max = 0.0;
+      for (Index i = 0; i < results.num_stations(); ++i) {
+        const post::BeamStation& st = results.stations()[static_cast<std::size_t>(i)];
+        const BeamSection& sec = beam.section(st.element);
+        Point p = point(st.element, st.xi);
+        if (st.node > 0 && st.node < n) {
+          const Point left = point(st.node - 1, 1.0);
+          p.m = 0.5 * (p.m + left.m);
+          p.eps = 0.5 * (p.eps + left.eps);
+          p.t_eff = 0.5 * (p.t_eff + left.t_eff);
+        }
+        const std::string where = fmt::format("station {}, {} per element, {}", i, gauss,
+                                              l1 ? "sections, L1" : "uniform");
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(out(i, col(post::BeamQuantity::kX) + c), p.r[c], kTol * 10.0) << where;
+        EXPECT_NEAR(out(i, col(post::BeamQuantity::kStrain)), p.eps, kTol) << where;
+        EXPECT_NEAR(out(i, col(post::BeamQuantity::kTensionEffective)), p.t_eff, kTol * sec.EA())
+            << where;
+        EXPECT_EQ(out(i, col(post::BeamQuantity::kTensionWall)),
+                  out(i, col(post::BeamQuantity::kTensionEffective)));  // in air, empty
+        const double M = p.m.norm();
+        m_max = std::max(m_max, M);
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(out(i, col(post::BeamQuantity::kMomentX) + c), p.m[c], kTol * scale_m)
+              << where;
+        EXPECT_NEAR(out(i, col(post::BeamQuantity::kMoment)), M, kTol * scale_m) << where;
+        const double vm = std::abs(p.t_eff / sec.area) + M * 0.1 / sec.second_moment;
+        EXPECT_NEAR(out(i, col(post::BeamQuantity::kStressVonMises)), vm,
+                    kTol * (sec.EA() / sec.area + scale_m * 0.1 / sec.second_moment))
+            << where;
       }
-      const std::string where = fmt::format("station {}, {} per element", i, gauss);
-      for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(out(i, col(post::BeamQuantity::kX) + c), p.r[c], kTol * 10.0) << where;
-      EXPECT_NEAR(out(i, col(post::BeamQuantity::kStrain)), p.eps, kTol * std::abs(p.eps)) << where;
-      EXPECT_NEAR(out(i, col(post::BeamQuantity::kTensionEffective)), p.t_eff,
-                  kTol * std::abs(p.t_eff))
-          << where;
-      EXPECT_EQ(out(i, col(post::BeamQuantity::kTensionWall)),
-                out(i, col(post::BeamQuantity::kTensionEffective)));  // in air, empty
-      const double M = p.m.norm();
-      m_max = std::max(m_max, M);
-      for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(out(i, col(post::BeamQuantity::kMomentX) + c), p.m[c], kTol * M) << where;
-      EXPECT_NEAR(out(i, col(post::BeamQuantity::kMoment)), M, kTol * M) << where;
-      const double vm = std::abs(p.t_eff / sec.area) + M * 0.1 / sec.second_moment;
-      EXPECT_NEAR(out(i, col(post::BeamQuantity::kStressVonMises)), vm, 1e-12 * vm) << where;
+      // the bending is not trivial: the root moment is |L x F| of the tip force's transverse
+      // components (within the deflection's change of the lever arm)
+      EXPECT_GT(m_max, 0.9 * scale_m);
     }
-    // the bending is not trivial: the root moment is |L x F| of the tip force's transverse
-    // components (within the deflection's change of the lever arm)
-    EXPECT_GT(m_max, 0.9 * 10.0 * std::hypot(6.0e4, 1.0e5));
   }
 }
