@@ -177,6 +177,43 @@ loads:
   }
 }
 
+// A state that is not finite (a node's coordinates NaN, as a diverging run leaves them) gives
+// NaN stresses at the stations of the elements it touches, not 0: the envelopes and code
+// checks read a NaN as a failed result (std::max(0, NaN) is 0, which hid it until the
+// twelfth session). The stations of the other elements keep their finite values.
+TEST(BeamResults, AStateThatIsNotFiniteGivesNaNStressesNotZero) {
+  const std::string model =
+      riser("[0, 0, -50]", "[0, 0, -150]", R"(  water: {density: 1025, depth: 1000}
+)") + R"(
+hydrodynamics:
+  riser: {contents_density: 850, contents_diameter: 0.44}
+)";
+  Solved s = solve(model);
+  const post::BeamResults results(*s.beam, io::pipe_pressure(s.model, *s.beam));
+  MatX out;
+  results.compute(s.state, out);
+  const int vm = col(post::BeamQuantity::kStressVonMises);
+  for (Index i = 0; i < results.num_stations(); ++i) ASSERT_GT(out(i, vm), 0.0) << i;
+  State bad = s.state;
+  const int node = 10;  // an interior node: elements 9 and 10
+  for (int j = 0; j < 6; ++j) bad.q[s.beam->node_index(node) + j] = std::nan("");
+  results.compute(bad, out);
+  int nan_stations = 0;
+  for (Index i = 0; i < results.num_stations(); ++i) {
+    const post::BeamStation& st = results.stations()[static_cast<std::size_t>(i)];
+    const bool touched = st.element == node - 1 || st.element == node ||
+                         (st.node >= node - 1 && st.node <= node + 1);
+    if (touched) {
+      EXPECT_TRUE(std::isnan(out(i, vm))) << "station " << i << ": " << out(i, vm);
+      EXPECT_TRUE(std::isnan(out(i, col(post::BeamQuantity::kStressBending)))) << i;
+      ++nan_stations;
+    } else {
+      EXPECT_TRUE(std::isfinite(out(i, vm))) << "station " << i;
+    }
+  }
+  EXPECT_GE(nan_stations, 5);  // the two elements' Gauss points and three nodes
+}
+
 TEST(BeamResults, CantileverMomentUnderATipForce) {
   // 10 m cantilever, 10 elements, tip force 1 kN down (tip deflection F L^3/(3 EI) =
   // 0.19 m, 2 % of L: close to linear)

@@ -151,12 +151,13 @@ void BeamResults::compute(const State& state, MatX& out) const {
       const double sb = M * ro / sec.second_moment;
       const double sr = -p_e;
       const double sh = (2.0 * p_i * ri * ri - p_e * (ro * ro + ri * ri)) / (ro * ro - ri * ri);
-      double vm2 = 0.0;  // the larger square: one square root (sqrt is monotone)
-      for (double sign : {1.0, -1.0}) {
+      // the larger square of the two fibres: one square root (sqrt is monotone); a state
+      // that is not finite gives NaN, not 0 (std::max keeps its first argument on NaN)
+      auto square = [&](double sign) {
         const double sz = T_wall / sec.area + sign * sb;
-        vm2 = std::max(
-            vm2, 0.5 * ((sz - sh) * (sz - sh) + (sh - sr) * (sh - sr) + (sr - sz) * (sr - sz)));
-      }
+        return 0.5 * ((sz - sh) * (sz - sh) + (sh - sr) * (sh - sr) + (sr - sz) * (sr - sz));
+      };
+      const double vm2 = std::max(square(1.0), square(-1.0));
       const double vm = std::sqrt(vm2);
       row(static_cast<int>(BeamQuantity::kStressBending)) = sb;
       row(static_cast<int>(BeamQuantity::kStressVonMises)) = vm;
