@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
+#include <tuple>
 
 namespace seaflex {
 
@@ -228,13 +231,26 @@ std::pair<Vec3, Vec3> Joint::reaction(const State& state, const Eigen::Ref<const
 void Joint::add_channels(ChannelList& channels, Index row_offset) const {
   const Index rows = num_rows();
   static const char* names[] = {"fx", "fy", "fz", "mx", "my", "mz"};
+  // the six components from one reaction per output row (ChannelRow): each evaluates the
+  // joint's factors again otherwise
+  struct Memo {
+    std::mutex mutex;  // a model's channels read from two threads at once stay correct
+    long row = 0;
+    Vec3 F, M;
+  };
+  const auto memo = std::make_shared<Memo>();
   for (int i = 0; i < 6; ++i) {
     channels.push_back(
-        {fmt::format("{}.{}", name(), names[i]), [this, i, row_offset, rows](const State& s) {
+        {fmt::format("{}.{}", name(), names[i]), [this, i, row_offset, rows, memo](const State& s) {
            if (s.lambda.size() < row_offset + rows)
              throw std::logic_error("Joint: state without multipliers");
-           const auto [F, M] = reaction(s, s.lambda.segment(row_offset, rows));
-           return i < 3 ? F[i] : M[i - 3];
+           const long row = ChannelRow::current();
+           const std::lock_guard<std::mutex> lock(memo->mutex);
+           if (row == 0 || memo->row != row) {
+             std::tie(memo->F, memo->M) = reaction(s, s.lambda.segment(row_offset, rows));
+             memo->row = row;
+           }
+           return i < 3 ? memo->F[i] : memo->M[i - 3];
          }});
   }
 }

@@ -48,7 +48,10 @@ Simulation::Simulation(Dae& dae, ChannelList channels, Integrator& integrator,
 
 void Simulation::record(State& state) {
   if (dae_.num_constraints() > 0) integrator_.update_multipliers(dae_, state);  // reactions
-  for (std::size_t i = 0; i < channels_.size(); ++i) row_[i] = channels_[i].value(state);
+  {
+    const ChannelRow row;  // the state does not change while the row's channels are read
+    for (std::size_t i = 0; i < channels_.size(); ++i) row_[i] = channels_[i].value(state);
+  }
   for (Recorder* r : recorders_) r->record(state, row_);
   ++rows_;
 }
