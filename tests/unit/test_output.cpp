@@ -190,3 +190,29 @@ TEST(Output, EnvelopeExtendedBetweenRows) {
   EXPECT_TRUE(std::isnan(env.min()(0, 2)) && std::isnan(env.max()(0, 2)));
   EXPECT_THROW(env.extend(MatX::Zero(2, 3)), std::invalid_argument);
 }
+
+// a NaN that comes after numbers (a value that could not be computed at one row or step)
+// makes the extremes NaN, as it does the mean: the envelope does not report the extremes of
+// the other rows as if they were all (std::min/max and a plain comparison would keep them)
+TEST(Output, EnvelopeKeepsALaterNaN) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  MatX a(1, 3), bad(1, 3), b(1, 3);
+  a << 1, 4, -2;
+  bad << nan, 5, nan;
+  b << 3, 2, 0;
+  post::Envelope rows, steps;
+  rows.add(a);
+  rows.add(bad);  // a NaN in a row
+  rows.add(b);
+  steps.add(a);
+  steps.extend(bad);  // a NaN in a step between the rows
+  steps.add(b);
+  for (const post::Envelope* env : {&rows, &steps}) {
+    EXPECT_TRUE(std::isnan(env->min()(0, 0)) && std::isnan(env->max()(0, 0)));
+    EXPECT_TRUE(std::isnan(env->min()(0, 2)) && std::isnan(env->max()(0, 2)));
+    EXPECT_EQ(env->min()(0, 1), 2.0);  // the finite column as before
+    EXPECT_EQ(env->max()(0, 1), 5.0);
+  }
+  EXPECT_TRUE(std::isnan(rows.mean()(0, 0)));
+  EXPECT_EQ(steps.mean()(0, 0), 2.0);  // the mean is over the rows only
+}

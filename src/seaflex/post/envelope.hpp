@@ -1,7 +1,8 @@
 // Envelopes of results over time: the minimum, maximum and mean of every entry of a
 // table (stations x quantities) over the output rows it is given, and optionally the
-// minimum and maximum also over the steps between the rows (extend). NaN entries (a
-// quantity that does not apply) stay NaN.
+// minimum and maximum also over the steps between the rows (extend). An entry that is NaN
+// in any row or step (a quantity that does not apply, or one that could not be computed)
+// is NaN in the minimum, maximum and mean.
 #pragma once
 
 #include "seaflex/core/types.hpp"
