@@ -1,7 +1,10 @@
 #include "seaflex/hydro/rao_motion.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
+
+#include "seaflex/math/row_sums.hpp"
 
 namespace seaflex::hydro {
 
@@ -23,6 +26,22 @@ RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& co
       im_.push_back(c[j].imag());
     }
   }
+  const std::size_t K = omega_.size();
+  sums_.assign(18 * 2 * K, 0.0);
+  auto at = [&](std::size_t row, std::size_t col) -> double& { return sums_[row * 2 * K + col]; };
+  for (std::size_t k = 0; k < K; ++k) {
+    const double w = omega_[k];
+    for (std::size_t j = 0; j < 6; ++j) {
+      const double re = re_[6 * k + j], im = im_[6 * k + j];
+      // z = c_j e^{iwt}; x = Re{z}, x' = Re{i w z} = -w Im{z}, x'' = -w^2 x
+      at(j, k) = re;
+      at(j, K + k) = -im;
+      at(6 + j, k) = -w * im;
+      at(6 + j, K + k) = -w * re;
+      at(12 + j, k) = -w * w * re;
+      at(12 + j, K + k) = w * w * im;
+    }
+  }
 }
 
 Vec6c RaoMotion::complex_amplitude(std::size_t k) const {
@@ -37,20 +56,21 @@ MotionSample RaoMotion::sample(double t) const {
     const std::lock_guard<std::mutex> lock(memo_mutex_);
     if (t == memo_t_) return memo_;
   }
+  const std::size_t K = omega_.size();
+  std::vector<double> cs(2 * K);  // cos(w_k t), then sin(w_k t)
+  for (std::size_t k = 0; k < K; ++k) {
+    const double wt = omega_[k] * t;
+    const double c = std::cos(wt), s = std::sin(wt);  // one sincos
+    cs[k] = c;
+    cs[K + k] = s;
+  }
+  std::array<double, 18> y{};
+  math::row_sums(sums_.data(), 2 * K, 18, cs.data(), 2 * K, y.data());
   MotionSample m;
-  for (std::size_t k = 0; k < omega_.size(); ++k) {
-    const double w = omega_[k];
-    const double c = std::cos(w * t), s = std::sin(w * t);
-    const double* re = &re_[6 * k];
-    const double* im = &im_[6 * k];
-    for (int j = 0; j < 6; ++j) {
-      // z = c_j e^{iwt}; x = Re{z}, x' = Re{i w z} = -w Im{z}, x'' = -w^2 x
-      const double zr = re[j] * c - im[j] * s;
-      const double zi = re[j] * s + im[j] * c;
-      m.x[j] += zr;
-      m.x_t[j] -= w * zi;
-      m.x_tt[j] -= w * w * zr;
-    }
+  for (int j = 0; j < 6; ++j) {
+    m.x[j] = y[static_cast<std::size_t>(j)];
+    m.x_t[j] = y[static_cast<std::size_t>(6 + j)];
+    m.x_tt[j] = y[static_cast<std::size_t>(12 + j)];
   }
   const std::lock_guard<std::mutex> lock(memo_mutex_);
   memo_t_ = t;

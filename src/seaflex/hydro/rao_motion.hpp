@@ -38,6 +38,10 @@ class RaoMotion : public Motion {
   // for sample()'s loop of real multiply-adds (std::complex products check for NaN and do not
   // vectorize)
   std::vector<double> omega_, re_, im_;
+  // the sums of sample() as one matrix-vector product, [x; x_t; x_tt] = sums_ [cos(w t);
+  // sin(w t)]: row j of x_j holds (re_jk, -im_jk), of x_t,j (-w_k im_jk, -w_k re_jk), of
+  // x_tt,j (-w_k^2 re_jk, w_k^2 im_jk) (18 x 2K, row-major, summed by math::row_sums)
+  std::vector<double> sums_;
   // the last sample: the constraints ask for the same t several times per Newton iteration,
   // and each sample costs a sine and cosine per wave component (issue 21)
   mutable std::mutex memo_mutex_;

@@ -9,6 +9,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "seaflex/math/row_sums.hpp"
+
 namespace seaflex::hydro {
 
 namespace {
@@ -286,29 +288,22 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pre
     // the exact sums at the block's levels, without the ramp (WaveField::airy), over the
     // components the block's top level keeps (depth truncation: the deeper levels keep
     // fewer, and their further terms, each below the truncation's bound, are added too):
-    // the four kinematics values of the block's levels as four matrix-vector products, the
-    // levels' depth factors (rows) times each of the column's coefficients (Eigen's
-    // row-major product runs the block's rows together and reads each coefficient once for
-    // them; dot products per level read it once per level); the pressure, when asked, a dot
-    // product per level over the level's own components
+    // the four kinematics values of the block's levels as sums of the levels' depth factors
+    // (rows) times the column's coefficients (math/row_sums.hpp, each row read once for two
+    // of them); the
+    // pressure, when asked, a dot product per level over the level's own components
     const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
     using CMap = Eigen::Map<const Eigen::VectorXd>;
     if (kin) {
-      const auto rows = static_cast<Eigen::Index>(hi - lo);
-      const auto n = static_cast<Eigen::Index>(keep_[lo]);
-      using Rows =
-          Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>,
-                     0, Eigen::OuterStride<>>;
-      const std::size_t row = lo * static_cast<std::size_t>(N);
-      const Rows fh(fh_.data() + row, rows, n, Eigen::OuterStride<>(N)),
-          fv(fv_.data() + row, rows, n, Eigen::OuterStride<>(N));
-      Eigen::Map<Eigen::VectorXd> uh(col.values.data() + lo, rows),
-          uz(col.values.data() + J + lo, rows), ah(col.values.data() + 2 * J + lo, rows),
-          az(col.values.data() + 3 * J + lo, rows);
-      uh.noalias() = fh * CMap(col.coef.data(), n);
-      ah.noalias() = fh * CMap(col.coef.data() + N, n);
-      uz.noalias() = fv * CMap(col.coef.data() + 2 * N, n);
-      az.noalias() = fv * CMap(col.coef.data() + 3 * N, n);
+      const int rows = static_cast<int>(hi - lo);
+      const std::size_t n = keep_[lo], NN = static_cast<std::size_t>(N);
+      const std::size_t row = lo * NN;
+      double* v = col.values.data();
+      const double* c = col.coef.data();
+      math::row_sums_pair(fh_.data() + row, NN, rows, c, c + NN, n, v + lo,
+                          v + 2 * J + lo);  // uh, ah
+      math::row_sums_pair(fv_.data() + row, NN, rows, c + 2 * NN, c + 3 * NN, n, v + J + lo,
+                          v + 3 * J + lo);  // uz, az
     }
     if (!pre) continue;
     for (std::size_t j = lo; j < hi; ++j) {
