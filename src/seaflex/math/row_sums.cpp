@@ -5,13 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
-// the two versions (row_sums.hpp)
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
-    !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
-#define SEAFLEX_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define SEAFLEX_VECTOR_CLONES
-#endif
+#include "seaflex/math/vector_clones.hpp"
 
 namespace seaflex::math {
 

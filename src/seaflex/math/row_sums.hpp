@@ -3,14 +3,8 @@
 // and the RAO motion's sum over the wave components (hydro/rao_motion.cpp). Each sum is kept
 // as four partial sums (i mod 4), added in a fixed order at the end, so the loops run four
 // components at a time in vector registers and the result does not depend on the vector
-// width. The kernels are compiled twice, for the portable x86-64 baseline (SSE2) and for
-// x86-64-v3 (AVX2 and FMA: Intel Haswell, AMD Zen and later), and the processor's version is
-// picked when the program loads (GCC's target_clones, as glibc picks its own memset): the
-// portable build gets the wider vectors where the machine has them, the rest of the program
-// stays portable (the SEAFLEX_NATIVE option compiles all of it for the build machine). The
-// two versions differ at round-off (FMA): results are identical on one machine for any
-// thread count, and within round-off between machines. One version only with clang (the
-// fuzz build), under the sanitizers and off x86-64.
+// width. The kernels are compiled also for AVX2 and FMA, picked when the program loads
+// (math/vector_clones.hpp).
 #pragma once
 
 #include <cstddef>

@@ -2,7 +2,28 @@
 
 #include <stdexcept>
 
+#include "seaflex/math/vector_clones.hpp"
+
 namespace seaflex::post {
+
+namespace {
+// lo = min(lo, v), hi = max(hi, v) entry by entry. cwiseMin/Max would drop NaN in favour of
+// the number: NaN is kept wherever it comes, first or later (a quantity that does not apply,
+// or a value that could not be computed: the extreme is then unknown, not the extreme of the
+// other rows). A NaN extreme stays (a comparison with NaN is false); a NaN value replaces the
+// number (v != v). Selects, not conditional stores, and the conditions joined by a bitwise |
+// (|| is a branch), so that the loop is vectorized; compiled also for AVX2
+// (math/vector_clones.hpp)
+SEAFLEX_VECTOR_CLONES
+void extremes(const double* v, double* lo, double* hi, Index size) {
+  for (Index i = 0; i < size; ++i) {
+    const double x = v[i];
+    const bool nan = x != x;
+    lo[i] = ((x < lo[i]) | nan) ? x : lo[i];
+    hi[i] = ((x > hi[i]) | nan) ? x : hi[i];
+  }
+}
+}  // namespace
 
 void Envelope::add(const MatX& values) {
   if (count_ == 0) {
@@ -18,21 +39,7 @@ void Envelope::extend(const MatX& values) {
   if (count_ == 0) return;
   if (values.rows() != min_.rows() || values.cols() != min_.cols())
     throw std::invalid_argument("Envelope: the table changed size");
-  // cwiseMin/Max would drop NaN in favour of the number: NaN is kept wherever it comes,
-  // first or later (a quantity that does not apply, or a value that could not be computed:
-  // the extreme is then unknown, not the extreme of the other rows). A NaN extreme stays (a
-  // comparison with NaN is false); a NaN value replaces a number (v != v). Written as
-  // selects over the whole storage, not as conditional stores, so that the compiler can
-  // vectorize them
-  const double* v = values.data();
-  double* lo = min_.data();
-  double* hi = max_.data();
-  const Index size = values.size();
-  for (Index i = 0; i < size; ++i) {
-    const bool nan = v[i] != v[i];
-    lo[i] = (v[i] < lo[i] || nan) ? v[i] : lo[i];
-    hi[i] = (v[i] > hi[i] || nan) ? v[i] : hi[i];
-  }
+  extremes(values.data(), min_.data(), max_.data(), values.size());
 }
 
 MatX Envelope::mean() const {
