@@ -26,7 +26,7 @@
 //   the interpolation's and below the 1e-12 to which the grid equals the sum at its nodes.
 //   The velocity and acceleration of a block of kBlock levels are summed together, over the
 //   components of its top level (the deeper levels' further terms are inside their bound:
-//   summing them is as exact), as matrix-vector products; the pressure level by level.
+//   summing them is as exact), as row sums (math/row_sums.hpp); the pressure level by level.
 // - Levels: z_0 = 0, z_{j+1} = z_j - (dz + dz_growth |z_j|), the last one at -d (deep
 //   water: at -21 / k_min, where e^{k_min z} < 1e-9; below it the exact sum is used): fine
 //   at the surface where the shortest components live, coarse at depth where only the long
