@@ -34,9 +34,8 @@ class RaoMotion : public Motion {
   Vec6c complex_amplitude(std::size_t k) const;
 
  private:
-  // per component: its frequency, and its amplitudes' real and imaginary parts apart (6 each),
-  // for sample()'s loop of real multiply-adds (std::complex products check for NaN and do not
-  // vectorize)
+  // per component: its frequency, and its amplitudes' real and imaginary parts apart (6 each;
+  // complex_amplitude(), and the source of sums_)
   std::vector<double> omega_, re_, im_;
   // the sums of sample() as one matrix-vector product, [x; x_t; x_tt] = sums_ [cos(w t);
   // sin(w t)]: row j of x_j holds (re_jk, -im_jk), of x_t,j (-w_k im_jk, -w_k re_jk), of

@@ -290,8 +290,8 @@ void WaveGrid::fill_levels(Column& col, std::size_t j0, std::size_t j1, bool pre
     // fewer, and their further terms, each below the truncation's bound, are added too):
     // the four kinematics values of the block's levels as sums of the levels' depth factors
     // (rows) times the column's coefficients (math/row_sums.hpp, each row read once for two
-    // of them); the
-    // pressure, when asked, a dot product per level over the level's own components
+    // of them); the pressure, when asked, a dot product per level over the level's own
+    // components
     const std::size_t lo = blk * kBlock, hi = std::min(J, lo + kBlock);
     using CMap = Eigen::Map<const Eigen::VectorXd>;
     if (kin) {
