@@ -57,7 +57,8 @@ MotionSample RaoMotion::sample(double t) const {
     if (t == memo_t_) return memo_;
   }
   const std::size_t K = omega_.size();
-  std::vector<double> cs(2 * K);  // cos(w_k t), then sin(w_k t)
+  thread_local std::vector<double> cs;  // cos(w_k t), then sin(w_k t); kept per thread
+  cs.resize(2 * K);
   for (std::size_t k = 0; k < K; ++k) {
     const double wt = omega_[k] * t;
     const double c = std::cos(wt), s = std::sin(wt);  // one sincos

@@ -2,9 +2,9 @@
 // spends its time in (issue 21): the grid wave kinematics' depth sums (hydro/wave_grid.cpp)
 // and the RAO motion's sum over the wave components (hydro/rao_motion.cpp). Each sum is kept
 // as four partial sums (i mod 4), added in a fixed order at the end, so the loops run four
-// components at a time in vector registers and the result does not depend on the vector
-// width. The kernels are compiled also for AVX2 and FMA, picked when the program loads
-// (math/vector_clones.hpp).
+// components at a time in vector registers without reassociating anything. The kernels are
+// compiled also for AVX2 and FMA, picked when the program loads (math/vector_clones.hpp);
+// the FMA version's results differ from the other's at round-off.
 #pragma once
 
 #include <cstddef>

@@ -2,7 +2,8 @@
 // table (stations x quantities) over the output rows it is given, and optionally the
 // minimum and maximum also over the steps between the rows (extend). An entry that is NaN
 // in any row or step (a quantity that does not apply, or one that could not be computed)
-// is NaN in the minimum, maximum and mean.
+// is NaN in the minimum and maximum, and, when in a row, in the mean (the mean is over the
+// rows only; a step before the first row is ignored, as every value is).
 #pragma once
 
 #include "seaflex/core/types.hpp"
