@@ -11,6 +11,7 @@ namespace seaflex::hydro {
 RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& components,
                      const Vec3& origin, RaoPhaseReference reference, int* clamped) {
   if (clamped) *clamped = 0;
+  std::vector<Vec6c> amplitudes;  // H A of each component kept
   for (const WaveComponent& w : components) {
     if (w.amplitude == 0.0) continue;
     bool off = false;
@@ -19,12 +20,8 @@ RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& co
     double phase = w.phase;
     if (reference == RaoPhaseReference::kRaoOrigin)
       phase -= w.k * (origin.x() * std::cos(w.direction) + origin.y() * std::sin(w.direction));
-    const Vec6c c = H * std::polar(w.amplitude, phase);
+    amplitudes.push_back(H * std::polar(w.amplitude, phase));
     omega_.push_back(w.omega);
-    for (int j = 0; j < 6; ++j) {
-      re_.push_back(c[j].real());
-      im_.push_back(c[j].imag());
-    }
   }
   const std::size_t K = omega_.size();
   sums_.assign(18 * 2 * K, 0.0);
@@ -32,7 +29,8 @@ RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& co
   for (std::size_t k = 0; k < K; ++k) {
     const double w = omega_[k];
     for (std::size_t j = 0; j < 6; ++j) {
-      const double re = re_[6 * k + j], im = im_[6 * k + j];
+      const double re = amplitudes[k][static_cast<Index>(j)].real();
+      const double im = amplitudes[k][static_cast<Index>(j)].imag();
       // z = c_j e^{iwt}; x = Re{z}, x' = Re{i w z} = -w Im{z}, x'' = -w^2 x
       at(j, k) = re;
       at(j, K + k) = -im;
@@ -47,7 +45,9 @@ RaoMotion::RaoMotion(const RaoTable& table, const std::vector<WaveComponent>& co
 Vec6c RaoMotion::complex_amplitude(std::size_t k) const {
   if (k >= omega_.size()) throw std::out_of_range("RaoMotion::complex_amplitude");
   Vec6c c;
-  for (int j = 0; j < 6; ++j) c[j] = {re_[6 * k + j], im_[6 * k + j]};
+  const std::size_t K = omega_.size();
+  for (std::size_t j = 0; j < 6; ++j)  // from sums_'s row of x_j: (re, -im)
+    c[static_cast<Index>(j)] = {sums_[j * 2 * K + k], -sums_[j * 2 * K + K + k]};
   return c;
 }
 

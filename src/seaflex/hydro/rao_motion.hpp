@@ -34,12 +34,12 @@ class RaoMotion : public Motion {
   Vec6c complex_amplitude(std::size_t k) const;
 
  private:
-  // per component: its frequency, and its amplitudes' real and imaginary parts apart (6 each;
-  // complex_amplitude(), and the source of sums_)
-  std::vector<double> omega_, re_, im_;
-  // the sums of sample() as one matrix-vector product, [x; x_t; x_tt] = sums_ [cos(w t);
-  // sin(w t)]: row j of x_j holds (re_jk, -im_jk), of x_t,j (-w_k im_jk, -w_k re_jk), of
-  // x_tt,j (-w_k^2 re_jk, w_k^2 im_jk) (18 x 2K, row-major, summed by math::row_sums)
+  // per component: its frequency; and sample()'s sums as one matrix-vector product,
+  // [x; x_t; x_tt] = sums_ [cos(w t); sin(w t)], with the complex amplitude c_jk = re_jk +
+  // i im_jk of H A: row j of x_j holds (re_jk, -im_jk), of x_t,j (-w_k im_jk, -w_k re_jk), of
+  // x_tt,j (-w_k^2 re_jk, w_k^2 im_jk) (18 x 2K, row-major, summed by math::row_sums;
+  // complex_amplitude() reads c from the rows of x)
+  std::vector<double> omega_;
   std::vector<double> sums_;
   // the last sample: the constraints ask for the same t several times per Newton iteration,
   // and each sample costs a sine and cosine per wave component (issue 21)
