@@ -68,7 +68,10 @@ analysis::AnalysisHooks statics_hooks(const io::Model& model, bool quiet) {
       fmt::print(stderr, "[seaflex] statics: load factor {:.4g} converged in {} iterations: {}\n",
                  factor, iterations, describe_convergence(so_far));
   };
-  hooks.statics_done = [quiet](const StaticsReport& rep, const std::string& design_summary) {
+  hooks.statics_done = [&model, quiet](const StaticsReport& rep,
+                                       const std::string& design_summary) {
+    if (const std::string w = describe_instability(*model.system, rep.stability); !w.empty())
+      fmt::print(stderr, "warning: statics: {}\n", w);
     if (quiet) return;
     fmt::print("statics converged: {} load increment(s), {} Newton iterations; {}\n",
                rep.increments, rep.iterations, describe_convergence(rep));
@@ -219,6 +222,11 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
   cli::clear_mode_shapes(dir);
   const ModalResult modes = solve_modes(*model.system, state, count);
+  if (modes.unstable > 0)
+    fmt::print(stderr,
+               "warning: modes: {} mode{} with negative stiffness (omega^2 down to {:.3g} "
+               "rad^2/s^2), listed as 0 Hz: the state is not a stable equilibrium\n",
+               modes.unstable, modes.unstable == 1 ? "" : "s", modes.lowest_omega2);
   std::string text = "mode,frequency_hz,period_s,omega_rad_s,dominant_coordinate,energy_share\n";
   if (!quiet)
     fmt::print("{:>5} {:>14} {:>14}  {}\n", "mode", "frequency (Hz)", "period (s)",

@@ -43,6 +43,12 @@ ModalResult solve_modes(const Dae& dae, const State& state, int count) {
     throw SolverError("modal analysis: the generalized eigenproblem failed", state.t);
   const Index k = (count <= 0 || count > Kr.rows()) ? Kr.rows() : count;
   ModalResult result;
+  const VecX& w2 = solver.eigenvalues();
+  if (w2.size() > 0) {
+    result.lowest_omega2 = w2.minCoeff();
+    const double floor = -1e-12 * w2.cwiseAbs().maxCoeff();
+    result.unstable = static_cast<int>((w2.array() < floor).count());
+  }
   result.omega = solver.eigenvalues().head(k).cwiseMax(0.0).cwiseSqrt();
   result.frequency_hz = result.omega / (2.0 * std::numbers::pi);
   result.shapes = Z * solver.eigenvectors().leftCols(k);

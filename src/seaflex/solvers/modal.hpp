@@ -14,6 +14,10 @@ struct ModalResult {
   VecX frequency_hz;  ///< omega / (2 pi)
   MatX shapes;        ///< mode shapes in the full coordinates, one column per mode, M-normalized
   MatX mass_shapes;   ///< M * shapes (kinetic energy shares: post/mode_shapes.hpp)
+  /// modes with omega^2 < 0 (listed with omega = 0): the state is not a stable equilibrium;
+  /// counted below -1e-12 of the largest |omega^2| (round-off of the dense eigensolver)
+  int unstable = 0;
+  double lowest_omega2 = 0.0;  ///< the smallest omega^2 (rad^2/s^2), negative when unstable
 };
 
 /// The lowest `count` modes (all when count <= 0 or too large).

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "seaflex/solvers/kkt_solver.hpp"
+#include "seaflex/solvers/stability.hpp"
 #include "seaflex/system/dae.hpp"
 
 namespace seaflex {
@@ -41,6 +42,10 @@ struct StaticsReport {
   double force_scale = 0.0;   ///< the largest force term at the end (N)
   double update = 0.0;        ///< largest coordinate change of the last iteration (m)
   double length_scale = 1.0;  ///< L = max(1 m, |q|_inf) (m)
+  /// the equilibrium's directions of negative stiffness (solvers/stability.hpp): a Newton
+  /// solution may be an unstable one (a line folded by a poor first guess, a column far
+  /// beyond its buckling load)
+  StabilityReport stability;
 };
 
 /// One line on how statics converged: the criterion met and its numbers, e.g.
