@@ -13,6 +13,7 @@ bit. Reference: docs/python.md. `import seaflex` stays cheap: numpy is imported 
 first results, pandas only by to_pandas().
 """
 import os
+import warnings
 
 try:
     from . import _core
@@ -21,7 +22,8 @@ except ImportError as _error:  # a build without the extension (sanitizers): bat
     _core_error = _error
 
 __all__ = ["Model", "Results", "BeamResults", "Error", "InputError", "ModelError",
-           "SolverError", "OutputError", "Interrupted", "set_threads", "threads"]
+           "SolverError", "OutputError", "Interrupted", "StabilityWarning", "set_threads",
+           "threads"]
 
 
 def set_threads(n):
@@ -69,6 +71,23 @@ class Interrupted(KeyboardInterrupt):
     the rows computed up to it."""
 
     results = None
+
+
+class StabilityWarning(UserWarning):
+    """Statics found an equilibrium that is not stable (a folded line, a column in
+    compression far beyond its buckling load), or modes found omega^2 < 0; the results
+    are returned all the same (docs/model-format.md section 12, "Unstable equilibria").
+    warnings.simplefilter("error", seaflex.StabilityWarning) makes it an exception."""
+
+
+def _warn_analysis(core, results=None, stacklevel=3):
+    """Issues the last analysis's warnings on core as StabilityWarning, and keeps them in
+    results.warnings."""
+    found = list(core.analysis_warnings)
+    if results is not None:
+        results.warnings = found
+    for w in found:
+        warnings.warn(w, StabilityWarning, stacklevel=stacklevel)
 
 
 _ERRORS = {"input": InputError, "model": ModelError, "solver": SolverError,
@@ -122,7 +141,6 @@ class Model:
         #: in the model (WAMIT files, RAO tables) resolve against its directory
         self.source_path = source_path
         if core.warnings:
-            import warnings
             for w in core.warnings:
                 warnings.warn(w, stacklevel=3)
 
@@ -247,6 +265,7 @@ class Model:
                                                                   bool(beams))
         results = Results(recorded, self._core)
         _raise(kind, message, results, exception)
+        _warn_analysis(self._core, results)
         return results
 
     def run(self, duration=None, progress=None, output_dir=None, beams=True):
@@ -273,6 +292,7 @@ class Model:
         if statics is not None:
             results.statics = Results(statics, model._core)
         _raise(kind, message, results, exception)
+        _warn_analysis(model._core, results)
         return results
 
     def modes(self, n=10, about_initial=False):
@@ -283,6 +303,7 @@ class Model:
         result, kind, message, exception = _need_core().modes(self._core, int(n),
                                                               bool(about_initial))
         _raise(kind, message, None, exception)
+        _warn_analysis(self._core)
         return result
 
     def __reduce__(self):  # pickling (multiprocessing, Dask): the text, read again
@@ -305,6 +326,7 @@ class Results:
         self._index = {name: k for k, name in enumerate(recorded.channels)}
         self.report = report
         self.statics = None
+        self.warnings = []  # the analysis's StabilityWarning texts (statics, run)
 
     @property
     def time(self):

@@ -186,7 +186,11 @@ def run_case(task):
             stats, notes = summarize(tmp, "timeseries" if task["command"] == "run" else "statics",
                                      task["summary"], task["start"])
             row.update(stats)
-            row["message"] = "; ".join(notes)
+            # the command line's warnings (an unstable statics equilibrium, the loader's)
+            # first: a case that ran but warned says so in the summary
+            warned = [line[len("warning: "):] for line in proc.stderr.splitlines()
+                      if line.startswith("warning: ")]
+            row["message"] = "; ".join(warned + notes)
         except Exception as e:  # the results are there; the summary of them is not
             row["message"] = f"summary: {type(e).__name__}: {e}"
     marker = {"case": name, "digest": task["digest"], "row": row}

@@ -51,7 +51,18 @@ std::atomic<int> g_running{0};
 struct CoreModel {
   io::Model model;
   std::atomic<bool> busy{false};
+  /// the last analysis's warnings (an unstable equilibrium), read after the call
+  std::vector<std::string> analysis_warnings;
 };
+
+// the warning of statics that found an unstable equilibrium, kept on the model
+void keep_stability_warning(CoreModel& core, analysis::AnalysisHooks& hooks) {
+  core.analysis_warnings.clear();
+  hooks.statics_done = [&core](const StaticsReport& rep, const std::string&) {
+    if (std::string w = describe_instability(*core.model.system, rep.stability); !w.empty())
+      core.analysis_warnings.push_back("statics: " + w);
+  };
+}
 
 // an analysis running on a model (with the GIL released)
 class Running {
@@ -228,6 +239,7 @@ py::tuple statics(std::shared_ptr<CoreModel> core, std::optional<std::string> ou
       hooks.statics_increment = [&](double factor, int, const StaticsReport&) {
         hook(factor, 1.0);
       };
+      keep_stability_warning(*core, hooks);
       analysis::run_statics(model, output, hooks);
     } catch (...) {
       std::tie(kind, message) = classify();
@@ -285,6 +297,7 @@ py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output
         hook(0.0, model.dynamics->duration);
       };
       hooks.progress = [&](double t, double duration) { hook(t, duration); };
+      keep_stability_warning(*core, hooks);
       summary = analysis::run_dynamics(model, output, hooks);
     } catch (...) {
       std::tie(kind, message) = classify();
@@ -311,9 +324,15 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
       hooks.statics_increment = [&](double factor, int, const StaticsReport&) {
         hook(factor, 1.0);
       };
+      keep_stability_warning(*core, hooks);
       state = about_initial ? model.system->initial_state()
                             : analysis::run_statics(model, analysis::AnalysisOutput{}, hooks);
       result = solve_modes(*model.system, state, count);
+      if (result->unstable > 0)
+        core->analysis_warnings.push_back(fmt::format(
+            "modes: {} mode{} with negative stiffness (omega^2 down to {:.3g} rad^2/s^2), "
+            "listed as 0 Hz: the state is not a stable equilibrium",
+            result->unstable, result->unstable == 1 ? "" : "s", result->lowest_omega2));
     } catch (...) {
       std::tie(kind, message) = classify();
     }
@@ -338,6 +357,7 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
   for (Index i = 0; i < model.system->num_coordinates(); ++i)
     coordinates.append(model.system->coordinate_name(i));
   py::dict d;
+  d["unstable"] = m.unstable;
   d["frequency_hz"] = f;
   d["period_s"] = period;
   d["omega_rad_s"] = omega;
@@ -381,6 +401,8 @@ PYBIND11_MODULE(_core, m) {
   py::class_<CoreModel, std::shared_ptr<CoreModel>>(m, "CoreModel")
       .def("summary", [](const CoreModel& c) { return analysis::model_summary(c.model); })
       .def_property_readonly("warnings", [](const CoreModel& c) { return c.model.warnings; })
+      .def_property_readonly("analysis_warnings",
+                             [](const CoreModel& c) { return c.analysis_warnings; })
       .def_property_readonly("file", [](const CoreModel& c) { return c.model.file; })
       .def_property_readonly("channels",
                              [](const CoreModel& c) {

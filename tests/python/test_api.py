@@ -127,6 +127,36 @@ def test_statics_equal_the_command_line(tmp_path):
         assert same_bits(results[name], columns[name]), name
 
 
+def test_an_unstable_equilibrium_warns_as_the_command_line_does(tmp_path):
+    """barge_riser's straight riser is compressed far beyond its Euler load (docs/
+    verification.md section 32): statics, run and modes issue seaflex.StabilityWarning with
+    the text of the command line's warning, keep it in results.warnings, and return the
+    results; a stable model (riser_in_current) warns of nothing."""
+    path = example("barge_riser.yaml")
+    r = cli("statics", path, "-o", str(tmp_path), "-q")
+    assert r.returncode == 0, r.stderr
+    line = [w for w in r.stderr.splitlines() if "unstable" in w]
+    assert len(line) == 1 and line[0].startswith("warning: statics: ")
+    model = seaflex.Model.from_file(path)
+    with pytest.warns(seaflex.StabilityWarning) as caught:
+        results = model.statics()
+    assert [str(w.message) for w in caught] == [line[0][len("warning: "):]]
+    assert results.warnings == [line[0][len("warning: "):]]
+    assert "5 directions of negative stiffness" in results.warnings[0]
+    with pytest.warns(seaflex.StabilityWarning) as caught:
+        modes = model.modes(6)
+    assert modes["unstable"] == 5
+    assert any("5 modes with negative stiffness" in str(w.message) for w in caught)
+    with pytest.warns(seaflex.StabilityWarning):
+        run = model.run(duration=1.0)
+    assert run.warnings == results.warnings
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", seaflex.StabilityWarning)
+        stable = seaflex.Model.from_file(example("riser_in_current.yaml")).statics()
+    assert stable.warnings == []
+
+
 def test_from_yaml_and_to_dict_round_trip():
     model = seaflex.Model.from_file(example("cantilever.yaml"))
     d = model.to_dict()

@@ -46,3 +46,16 @@ def test_summary_statistics_equal_the_results(tmp_path):
     assert row["riser.tension_effective.min"] == np.nanmin(kept)
     assert "riser.tension_effective.mean" not in frame  # along a beam: min and max only
     assert "riser.tension_wall.max" in frame
+
+
+def test_a_warning_reaches_the_summary(tmp_path):
+    """barge_riser's statics is unstable (docs/verification.md section 32): the case runs
+    (status ok) and its summary message is the command line's warning. The stable drilling
+    rig of the test above keeps an empty message."""
+    base = REPO / "examples" / "barge_riser.yaml"
+    cases = {"command": "statics", "table": [{"name": "as_is", "statics.load_steps": 1}]}
+    frame = batch.run(base, cases, output=tmp_path / "out", workers=1, progress=False,
+                      executable=EXE)
+    row = frame.iloc[0]
+    assert row["status"] == "ok"
+    assert row["message"].startswith("statics: the equilibrium found is unstable: 5 directions")
