@@ -39,6 +39,11 @@ struct StabilityReport {
 StabilityReport check_stability(const Dae& dae, const State& state, double load_factor = 1.0,
                                 double threshold = 1e-3);
 
+/// The same from the KKT matrix [K C_q^T; C_q 0] of such an evaluation (kq = 1 with the
+/// multipliers' Hessian), n coordinates and m constraint rows: statics passes the matrix
+/// its last Newton iteration evaluated at the converged state.
+StabilityReport check_stability(const SpMat& kkt, Index n, Index m, double threshold = 1e-3);
+
 /// One line for a warning, e.g. "the equilibrium found is unstable: 8 directions of
 /// negative stiffness, the largest at chain.n60.r'.y ..."; empty when none.
 std::string describe_instability(const Dae& dae, const StabilityReport& report);

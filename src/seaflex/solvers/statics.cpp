@@ -336,11 +336,10 @@ StaticsReport solve_statics(const Dae& dae, State& state, const StaticsSettings&
   // the residual of the converged state at load factor 1 (every Newton step ends with the
   // residual of the state it leaves): what dynamics takes as round-off (model/state.hpp)
   state.static_residual = newton.r_;
-  try {
-    report.stability = check_stability(dae, state, 1.0);
-  } catch (const SolverError&) {  // an element that cannot give its tangent here: unknown
-    report.stability.factored = false;
-  }
+  // the stability of the equilibrium, from the Newton matrix (kq = 1, the multipliers'
+  // Hessian, not regularized) that the last iteration evaluated at this state
+  report.stability =
+      check_stability(newton.eval_.kkt.matrix(), dae.num_coordinates(), dae.num_constraints());
   return report;
 }
 
