@@ -222,11 +222,9 @@ int cmd_modes(const std::string& file, const fs::path& dir, int count, bool abou
       about_initial ? model.system->initial_state() : run_statics(model, dir, quiet);
   cli::clear_mode_shapes(dir);
   const ModalResult modes = solve_modes(*model.system, state, count);
-  if (modes.unstable > 0)
-    fmt::print(stderr,
-               "warning: modes: {} mode{} with negative stiffness (omega^2 down to {:.3g} "
-               "rad^2/s^2), listed as 0 Hz: the state is not a stable equilibrium\n",
-               modes.unstable, modes.unstable == 1 ? "" : "s", modes.lowest_omega2);
+  if (const std::string w = describe_unstable_modes(modes.unstable, modes.lowest_omega2);
+      !w.empty())
+    fmt::print(stderr, "warning: modes: {}\n", w);
   std::string text = "mode,frequency_hz,period_s,omega_rad_s,dominant_coordinate,energy_share\n";
   if (!quiet)
     fmt::print("{:>5} {:>14} {:>14}  {}\n", "mode", "frequency (Hz)", "period (s)",

@@ -80,14 +80,18 @@ class StabilityWarning(UserWarning):
     warnings.simplefilter("error", seaflex.StabilityWarning) makes it an exception."""
 
 
-def _warn_analysis(core, results=None, stacklevel=3):
-    """Issues the last analysis's warnings on core as StabilityWarning, and keeps them in
-    results.warnings."""
-    found = list(core.analysis_warnings)
+def _warn_analysis(found, results=None, stacklevel=3):
+    """Keeps an analysis's warnings in results.warnings and issues them as
+    StabilityWarning (before an error of the same call is raised: the warning may explain
+    it; with warnings.simplefilter("error", StabilityWarning) the raised warning carries
+    the results as its .results)."""
+    found = list(found)
     if results is not None:
         results.warnings = found
     for w in found:
-        warnings.warn(w, StabilityWarning, stacklevel=stacklevel)
+        warning = StabilityWarning(w)
+        warning.results = results
+        warnings.warn(warning, stacklevel=stacklevel)
 
 
 _ERRORS = {"input": InputError, "model": ModelError, "solver": SolverError,
@@ -261,11 +265,11 @@ class Model:
         increment. SolverError carries the last converged increment as its results.
         beams=False keeps the channels only (see run())."""
         out = None if output_dir is None else os.fspath(output_dir)
-        recorded, kind, message, exception = _need_core().statics(self._core, out, progress,
-                                                                  bool(beams))
+        recorded, kind, message, exception, found = _need_core().statics(
+            self._core, out, progress, bool(beams))
         results = Results(recorded, self._core)
+        _warn_analysis(found, results)
         _raise(kind, message, results, exception)
-        _warn_analysis(self._core, results)
         return results
 
     def run(self, duration=None, progress=None, output_dir=None, beams=True):
@@ -286,13 +290,13 @@ class Model:
             d["dynamics"]["duration"] = float(duration)
             model = Model.from_dict(d, self.source_path)
         out = None if output_dir is None else os.fspath(output_dir)
-        statics, recorded, report, kind, message, exception = _need_core().run(
+        statics, recorded, report, kind, message, exception, found = _need_core().run(
             model._core, out, progress, bool(beams))
         results = Results(recorded, model._core, report)
         if statics is not None:
             results.statics = Results(statics, model._core)
+        _warn_analysis(found, results)
         _raise(kind, message, results, exception)
-        _warn_analysis(model._core, results)
         return results
 
     def modes(self, n=10, about_initial=False):
@@ -300,10 +304,10 @@ class Model:
         `seaflex modes` computes them: a dict of numpy arrays frequency_hz, period_s,
         omega_rad_s, energy_share, the list dominant_coordinate, shapes (coordinates x n,
         mass-normalized) and the coordinate names."""
-        result, kind, message, exception = _need_core().modes(self._core, int(n),
-                                                              bool(about_initial))
+        result, kind, message, exception, found = _need_core().modes(self._core, int(n),
+                                                                     bool(about_initial))
+        _warn_analysis(found)
         _raise(kind, message, None, exception)
-        _warn_analysis(self._core)
         return result
 
     def __reduce__(self):  # pickling (multiprocessing, Dask): the text, read again

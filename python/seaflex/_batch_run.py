@@ -165,6 +165,7 @@ def run_case(task):
     model = os.path.join(tmp, MODEL)
     write_atomically(model, task["text"])
     t0 = time.monotonic()
+    warned = []
     try:
         with open(os.path.join(tmp, LOG), "w", encoding="utf-8") as log:
             proc = subprocess.run(_command(exe, task, model, tmp), stdout=log,
@@ -173,6 +174,10 @@ def run_case(task):
             log.write(proc.stderr)
         row["exit_code"] = proc.returncode
         row["status"] = STATUS.get(proc.returncode, "error")
+        # the command line's warnings (an unstable statics equilibrium, the loader's),
+        # naming the case's folder as it will be
+        warned = [line[len("warning: "):].replace(tmp, final)
+                  for line in proc.stderr.splitlines() if line.startswith("warning: ")]
         if proc.returncode != 0:
             row["message"] = _message(proc.returncode, proc.stderr).replace(tmp, final)
     except subprocess.TimeoutExpired:
@@ -186,13 +191,10 @@ def run_case(task):
             stats, notes = summarize(tmp, "timeseries" if task["command"] == "run" else "statics",
                                      task["summary"], task["start"])
             row.update(stats)
-            # the command line's warnings (an unstable statics equilibrium, the loader's)
-            # first: a case that ran but warned says so in the summary
-            warned = [line[len("warning: "):] for line in proc.stderr.splitlines()
-                      if line.startswith("warning: ")]
+            # the warnings first: a case that ran but warned says so in the summary
             row["message"] = "; ".join(warned + notes)
         except Exception as e:  # the results are there; the summary of them is not
-            row["message"] = f"summary: {type(e).__name__}: {e}"
+            row["message"] = "; ".join(warned + [f"summary: {type(e).__name__}: {e}"])
     marker = {"case": name, "digest": task["digest"], "row": row}
     write_atomically(os.path.join(tmp, DONE if row["status"] == "ok" else FAILED),
                      json.dumps(marker, indent=1))

@@ -51,16 +51,15 @@ std::atomic<int> g_running{0};
 struct CoreModel {
   io::Model model;
   std::atomic<bool> busy{false};
-  /// the last analysis's warnings (an unstable equilibrium), read after the call
-  std::vector<std::string> analysis_warnings;
 };
 
-// the warning of statics that found an unstable equilibrium, kept on the model
-void keep_stability_warning(CoreModel& core, analysis::AnalysisHooks& hooks) {
-  core.analysis_warnings.clear();
-  hooks.statics_done = [&core](const StaticsReport& rep, const std::string&) {
-    if (std::string w = describe_instability(*core.model.system, rep.stability); !w.empty())
-      core.analysis_warnings.push_back("statics: " + w);
+// the warning of statics that found an unstable equilibrium, into this call's own list
+// (returned with its results: another thread may run the same model once this one is done)
+void keep_stability_warning(const io::Model& model, std::vector<std::string>& warnings,
+                            analysis::AnalysisHooks& hooks) {
+  hooks.statics_done = [&model, &warnings](const StaticsReport& rep, const std::string&) {
+    if (std::string w = describe_instability(*model.system, rep.stability); !w.empty())
+      warnings.push_back("statics: " + w);
   };
 }
 
@@ -224,6 +223,7 @@ py::tuple statics(std::shared_ptr<CoreModel> core, std::optional<std::string> ou
   auto recorded = std::make_shared<Recorded>(output_beam_results(model, beams), 1);
   PythonHook hook{std::move(progress), {}};
   std::string kind, message;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release release;
     try {
@@ -239,14 +239,14 @@ py::tuple statics(std::shared_ptr<CoreModel> core, std::optional<std::string> ou
       hooks.statics_increment = [&](double factor, int, const StaticsReport&) {
         hook(factor, 1.0);
       };
-      keep_stability_warning(*core, hooks);
+      keep_stability_warning(model, warnings, hooks);
       analysis::run_statics(model, output, hooks);
     } catch (...) {
       std::tie(kind, message) = classify();
     }
   }
   py::object exc = hook.take();
-  return py::make_tuple(recorded, kind, message, exc);
+  return py::make_tuple(recorded, kind, message, exc, warnings);
 }
 
 py::dict report_dict(const SimulationReport& r) {
@@ -280,6 +280,7 @@ py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output
   PythonHook hook{std::move(progress), {}};
   std::string kind, message;
   std::optional<analysis::RunSummary> summary;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release release;
     try {
@@ -297,7 +298,7 @@ py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output
         hook(0.0, model.dynamics->duration);
       };
       hooks.progress = [&](double t, double duration) { hook(t, duration); };
-      keep_stability_warning(*core, hooks);
+      keep_stability_warning(model, warnings, hooks);
       summary = analysis::run_dynamics(model, output, hooks);
     } catch (...) {
       std::tie(kind, message) = classify();
@@ -306,7 +307,7 @@ py::tuple run(std::shared_ptr<CoreModel> core, std::optional<std::string> output
   py::object exc = hook.take();
   return py::make_tuple(statics_recorded ? py::cast(statics_recorded) : py::none(), recorded,
                         summary ? py::object(report_dict(summary->report)) : py::none(), kind,
-                        message, exc);
+                        message, exc, warnings);
 }
 
 // natural frequencies about statics (or the initial state): (dict, kind, message, exception)
@@ -316,6 +317,7 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
   std::string kind, message;
   std::optional<ModalResult> result;
   State state;
+  std::vector<std::string> warnings;
   {
     py::gil_scoped_release release;
     try {
@@ -324,21 +326,19 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
       hooks.statics_increment = [&](double factor, int, const StaticsReport&) {
         hook(factor, 1.0);
       };
-      keep_stability_warning(*core, hooks);
+      keep_stability_warning(model, warnings, hooks);
       state = about_initial ? model.system->initial_state()
                             : analysis::run_statics(model, analysis::AnalysisOutput{}, hooks);
       result = solve_modes(*model.system, state, count);
-      if (result->unstable > 0)
-        core->analysis_warnings.push_back(fmt::format(
-            "modes: {} mode{} with negative stiffness (omega^2 down to {:.3g} rad^2/s^2), "
-            "listed as 0 Hz: the state is not a stable equilibrium",
-            result->unstable, result->unstable == 1 ? "" : "s", result->lowest_omega2));
+      if (std::string w = describe_unstable_modes(result->unstable, result->lowest_omega2);
+          !w.empty())
+        warnings.push_back("modes: " + w);
     } catch (...) {
       std::tie(kind, message) = classify();
     }
   }
   py::object exc = hook.take();
-  if (!result) return py::make_tuple(py::none(), kind, message, exc);
+  if (!result) return py::make_tuple(py::none(), kind, message, exc, warnings);
   const ModalResult& m = *result;
   const auto n = static_cast<py::ssize_t>(m.omega.size());
   py::array_t<double> f(n), period(n), omega(n), share(n);
@@ -365,7 +365,7 @@ py::tuple modes(std::shared_ptr<CoreModel> core, int count, bool about_initial) 
   d["energy_share"] = share;
   d["shapes"] = shapes;
   d["coordinates"] = coordinates;
-  return py::make_tuple(d, kind, message, exc);
+  return py::make_tuple(d, kind, message, exc, warnings);
 }
 
 // the statistics of one record (post/statistics.hpp) over the rows from from_row on, as
@@ -401,8 +401,6 @@ PYBIND11_MODULE(_core, m) {
   py::class_<CoreModel, std::shared_ptr<CoreModel>>(m, "CoreModel")
       .def("summary", [](const CoreModel& c) { return analysis::model_summary(c.model); })
       .def_property_readonly("warnings", [](const CoreModel& c) { return c.model.warnings; })
-      .def_property_readonly("analysis_warnings",
-                             [](const CoreModel& c) { return c.analysis_warnings; })
       .def_property_readonly("file", [](const CoreModel& c) { return c.model.file; })
       .def_property_readonly("channels",
                              [](const CoreModel& c) {

@@ -154,7 +154,12 @@ def test_an_unstable_equilibrium_warns_as_the_command_line_does(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error", seaflex.StabilityWarning)
         stable = seaflex.Model.from_file(example("riser_in_current.yaml")).statics()
-    assert stable.warnings == []
+        assert stable.warnings == []
+        # made an error, the warning is raised with the results of the call
+        with pytest.raises(seaflex.StabilityWarning) as raised:
+            model.statics()
+    assert raised.value.results.warnings == results.warnings
+    assert len(raised.value.results) == 1
 
 
 def test_from_yaml_and_to_dict_round_trip():

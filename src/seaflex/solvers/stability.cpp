@@ -9,20 +9,6 @@
 
 namespace seaflex {
 
-StabilityReport check_stability(const Dae& dae, const State& state, double load_factor,
-                                double threshold) {
-  DaeEval eval = dae.make_eval();
-  DaeRequest req;
-  req.forces = false;
-  req.matrix = true;
-  req.multiplier_hessian = true;
-  req.scales.kq = 1.0;
-  req.load_factor = load_factor;
-  dae.evaluate(state, req, eval);
-  return check_stability(eval.kkt.matrix(), dae.num_coordinates(), dae.num_constraints(),
-                         threshold);
-}
-
 StabilityReport check_stability(const SpMat& kkt, Index n, Index m, double threshold) {
   // the lower triangle of A = S sym(K) S + rho (C S)^T (C S) + 1e-8 I, in one pass over the
   // KKT matrix's entries (SimplicialLDLT reads the lower triangle only; no copies of K)
@@ -49,15 +35,14 @@ StabilityReport check_stability(const SpMat& kkt, Index n, Index m, double thres
       else  // each of K_ij and K_ji gives half of the symmetric part's lower entry
         entries.emplace_back(std::max(i, j), std::min(i, j), 0.5 * v);
     }
-  // a shift of 1e-8: a mode without any stiffness is then a small positive pivot,
-  // not a zero one that would stop the factorization (a diagonal missing from K included)
+  // a shift of 1e-8: no exact zero pivot stops the factorization (a mode without any
+  // stiffness, a diagonal missing from K)
   for (Index i = 0; i < n; ++i) entries.emplace_back(i, i, 1e-8);
   if (m > 0) {
     // the constraint rows in the scaled coordinates, each of unit length (the same null
-    // space), penalized by rho = 1e9: the null space's pivots then differ from those of
-    // Z^T K Z by about |K_zc|^2 / rho ~ 1e-9 (entries of order one) and carry round-off of
-    // about rho eps ~ 2e-7, both far below the threshold (with rho = 1e6 the zero-stiffness
-    // spin of examples/tip_body.yaml came out at -0.012: Finsler's rho* was not reached)
+    // space), penalized by rho = 1e9. A finite rho biases the null space's zero modes
+    // negative (with rho = 1e6 the free spin of examples/tip_body.yaml came out at a pivot
+    // of -0.012; at 1e9 it stays below the threshold) and round-off is about rho eps ~ 2e-7
     const SpMat C = SpMat(kkt.bottomLeftCorner(m, n).transpose());  // n x m: rows by column
     for (Index r = 0; r < m; ++r) {
       double norm2 = 0.0;
@@ -87,29 +72,68 @@ StabilityReport check_stability(const SpMat& kkt, Index n, Index m, double thres
     return report;
   }
   const VecX D = ldlt.vectorD();
-  // P A P^T = L D L^T: pivot k belongs to coordinate Pinv(k)
-  const auto& perm = ldlt.permutationPinv();
+  Index pivot = -1;  // the most negative pivot below -threshold
   for (Index k = 0; k < n; ++k) {
     if (!(D[k] < -threshold)) continue;
     ++report.negative;
     if (D[k] < report.most_negative) {
       report.most_negative = D[k];
-      report.worst = perm.size() == n ? perm.indices()[k] : k;  // empty: no permutation
+      pivot = k;
     }
+  }
+  if (pivot >= 0) {
+    // a direction of negative stiffness: with P A P^T = L D L^T, x = P^T L^-T e_k gives
+    // x^T A x = D_k < 0; in the model's coordinates d = S x. The warning names its largest
+    // position (worst_position): the pivot's own row is often a slope, and any coordinate
+    // of the fold (Euler's column at 1.2 P_cr: its mid node, where mode 1 moves most)
+    VecX y = VecX::Zero(n);
+    y[pivot] = 1.0;
+    ldlt.matrixU().solveInPlace(y);
+    report.direction = s.asDiagonal() * (ldlt.permutationPinv() * y);
   }
   return report;
 }
 
+Index worst_position(const Dae& dae, const VecX& direction) {
+  // the coordinates by |d|, largest first; the first position (a name ending in .x, .y or
+  // .z that is neither a slope r' nor a plate gradient r_p...), else the largest of all
+  if (direction.size() != dae.num_coordinates() || direction.size() == 0) return -1;
+  std::vector<Index> order(static_cast<std::size_t>(direction.size()));
+  for (Index i = 0; i < direction.size(); ++i) order[static_cast<std::size_t>(i)] = i;
+  std::sort(order.begin(), order.end(),
+            [&](Index a, Index b) { return std::abs(direction[a]) > std::abs(direction[b]); });
+  for (const Index i : order) {
+    const std::string name = dae.coordinate_name(i);
+    const auto dot = name.rfind('.');
+    const std::string last = dot == std::string::npos ? name : name.substr(dot + 1);
+    if ((last == "x" || last == "y" || last == "z") && name.find('\'') == std::string::npos &&
+        name.find("r_p") == std::string::npos)
+      return i;
+  }
+  return order.front();
+}
+
 std::string describe_instability(const Dae& dae, const StabilityReport& report) {
   if (report.negative == 0) return {};
+  const Index at = worst_position(dae, report.direction);
   return fmt::format(
-      "the equilibrium found is unstable: {} direction{} of negative stiffness, the largest at "
-      "{} (a line folded or kinked by the first guess or the load steps, or in compression "
-      "far beyond its buckling load); dynamics from it moves away. Try other statics."
-      "load_steps, a first guess nearer the equilibrium (length: starts a line as its "
+      "the equilibrium found is unstable: {} direction{} of negative stiffness, the most "
+      "negative moving {} most (a line folded or kinked by the first guess or the load "
+      "steps, or in compression far beyond its buckling load); a dynamic run started from it "
+      "will leave it (the line buckles or snaps). Try a different statics.load_steps, start "
+      "the line nearer its equilibrium (a beam's length with start and end starts it as its "
       "catenary), or check the effective tension for compression; seaflex modes lists the "
       "unstable modes",
-      report.negative, report.negative == 1 ? "" : "s", dae.coordinate_name(report.worst));
+      report.negative, report.negative == 1 ? "" : "s",
+      at >= 0 ? dae.coordinate_name(at) : std::string("?"));
+}
+
+std::string describe_unstable_modes(int unstable, double lowest_omega2) {
+  if (unstable == 0) return {};
+  return fmt::format(
+      "{} mode{} with negative stiffness (omega^2 down to {:.3g} rad^2/s^2), listed as 0 Hz: "
+      "the state is not a stable equilibrium",
+      unstable, unstable == 1 ? "" : "s", lowest_omega2);
 }
 
 }  // namespace seaflex

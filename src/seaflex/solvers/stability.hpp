@@ -13,11 +13,16 @@
 // Scaling: K's rows and columns by the square root of each row's largest entry (positions,
 // slopes and rotations have different units; the scaled entries are at most one) and
 // C_q's rows to unit length (the same null space), with rho = 1e9. A pivot counts as
-// negative when it is below -threshold (1e-3) of that scaled matrix: modes without
-// stiffness (a free spin about a hanging line, a body about a cable's axis) give pivots at
-// round-off level, not unstable equilibria; an equilibrium within a few per cent of a
-// buckling load is missed too (docs/model-format.md section 12, docs/verification.md
-// section 32). K is symmetrized first (non-conservative loads, the L1 and T2 cable models).
+// negative when it is below -threshold (1e-3) of that scaled matrix. The threshold is
+// what keeps modes without stiffness (a free spin about a hanging line, a body about a
+// cable's axis, a floating body's yaw) out of the count: a finite rho biases them
+// slightly negative (Finsler's lemma holds with equal inertia only for a nonsingular
+// Z^T K Z) and round-off is about rho eps. Pivots are not eigenvalues: their sizes depend
+// on the elimination order (AMD here) and on how the negative stiffness compares with the
+// line's axial stiffness, so a column just past its buckling load is missed (1.03 P_cr;
+// counted from 1.2 P_cr, docs/verification.md section 32) and the count of a mode at the
+// edge may differ by one from seaflex modes', which is exact. K is symmetrized first
+// (non-conservative loads, the L1 and T2 cable models).
 #pragma once
 
 #include <string>
@@ -29,23 +34,26 @@ namespace seaflex {
 struct StabilityReport {
   int negative = 0;          ///< directions of negative stiffness (negative pivots)
   double most_negative = 0;  ///< the most negative scaled pivot (< 0 if any)
-  Index worst = -1;          ///< the coordinate of that pivot (-1: none negative)
+  VecX direction;            ///< a direction of the most negative pivot (x^T K x < 0), or empty
   bool factored = true;      ///< false: the LDL^T broke down (a zero pivot), nothing known
 };
 
-/// The stability of `state` as an equilibrium (its multipliers in state.lambda) at the
-/// load factor. threshold: the smallest negative pivot counted, in the scaled matrix
-/// (entries of order one; see the file header).
-StabilityReport check_stability(const Dae& dae, const State& state, double load_factor = 1.0,
-                                double threshold = 1e-3);
-
-/// The same from the KKT matrix [K C_q^T; C_q 0] of such an evaluation (kq = 1 with the
-/// multipliers' Hessian), n coordinates and m constraint rows: statics passes the matrix
-/// its last Newton iteration evaluated at the converged state.
+/// The stability of an equilibrium from the KKT matrix [K C_q^T; C_q 0] evaluated there
+/// (kq = 1 with the multipliers' Hessian, not regularized), n coordinates and m
+/// constraint rows: statics passes the matrix its last Newton iteration evaluated at the
+/// converged state. threshold: the smallest negative pivot counted, in the scaled matrix.
 StabilityReport check_stability(const SpMat& kkt, Index n, Index m, double threshold = 1e-3);
 
+/// The coordinate of a direction's largest position component (its largest component when
+/// no position moves); -1 for an empty direction.
+Index worst_position(const Dae& dae, const VecX& direction);
+
 /// One line for a warning, e.g. "the equilibrium found is unstable: 8 directions of
-/// negative stiffness, the largest at chain.n60.r'.y ..."; empty when none.
+/// negative stiffness, the most negative moving chain.n165.r.z most ..."; empty when none.
 std::string describe_instability(const Dae& dae, const StabilityReport& report);
+
+/// The warning of seaflex modes (and the Python API) for modes with omega^2 < 0; empty
+/// when none.
+std::string describe_unstable_modes(int unstable, double lowest_omega2);
 
 }  // namespace seaflex
