@@ -73,11 +73,12 @@ StabilityReport check_stability(const SpMat& kkt, Index n, Index m, double thres
   }
   const VecX D = ldlt.vectorD();
   Index pivot = -1;  // the most negative pivot below -threshold
+  double most_negative = 0.0;
   for (Index k = 0; k < n; ++k) {
     if (!(D[k] < -threshold)) continue;
     ++report.negative;
-    if (D[k] < report.most_negative) {
-      report.most_negative = D[k];
+    if (D[k] < most_negative) {
+      most_negative = D[k];
       pivot = k;
     }
   }

@@ -32,10 +32,9 @@
 namespace seaflex {
 
 struct StabilityReport {
-  int negative = 0;          ///< directions of negative stiffness (negative pivots)
-  double most_negative = 0;  ///< the most negative scaled pivot (< 0 if any)
-  VecX direction;            ///< a direction of the most negative pivot (x^T K x < 0), or empty
-  bool factored = true;      ///< false: the LDL^T broke down (a zero pivot), nothing known
+  int negative = 0;      ///< directions of negative stiffness (negative pivots)
+  VecX direction;        ///< a direction of the most negative pivot (x^T K x < 0), or empty
+  bool factored = true;  ///< false: the LDL^T broke down (a zero pivot), nothing known
 };
 
 /// The stability of an equilibrium from the KKT matrix [K C_q^T; C_q 0] evaluated there
